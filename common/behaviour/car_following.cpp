@@ -1,0 +1,14 @@
+#include "behaviour/car_following.hpp"
+
+namespace entourage {
+
+double car_following_accel_mps2(const CarFollowingParams& p, double speed_mps, const LeaderView* leader) {
+  switch (p.model) {
+    case CarFollowingModel::kIdm:
+      break;
+  }
+  if (leader == nullptr) return idm_free_accel_mps2(p.idm, speed_mps);
+  return idm_accel_mps2(p.idm, speed_mps, leader->gap_m, leader->speed_mps);
+}
+
+}  // namespace entourage

@@ -1,0 +1,285 @@
+#include "dds/convert.hpp"
+
+#include <cmath>
+#include <initializer_list>
+
+#include "traffic/lateral.hpp"
+
+namespace entourage::dds {
+
+namespace {
+
+Direction direction_of(int d) { return d < 0 ? Direction::kBackward : Direction::kForward; }
+
+bool all_finite(std::initializer_list<double> xs) {
+  for (double x : xs) {
+    if (!std::isfinite(x)) return false;
+  }
+  return true;
+}
+
+std::optional<std::string> check_lane(int direction, int lane, int target_lane, const SampleLimits& l) {
+  if (direction != 1 && direction != -1) return "direction " + std::to_string(direction) + " is not +1 or -1";
+  const int lanes = direction == 1 ? l.lanes_forward : l.lanes_backward;
+  if (lane < 0 || lane >= lanes) return "lane " + std::to_string(lane) + " does not exist";
+  if (target_lane < 0 || target_lane >= lanes) return "target lane " + std::to_string(target_lane) + " does not exist";
+  return std::nullopt;
+}
+
+std::optional<std::string> check_motion(double speed, double accel, const SampleLimits& l) {
+  if (speed < 0.0 || speed > l.max_speed_mps) return "speed " + std::to_string(speed) + " m/s out of range";
+  if (std::abs(accel) > l.max_abs_accel_mps2) return "acceleration " + std::to_string(accel) + " m/s^2 out of range";
+  return std::nullopt;
+}
+
+}  // namespace
+
+EgoObservation from_msg(const msg::EgoState& m) {
+  EgoObservation e;
+  e.step = m.step();
+  e.time_s = m.time_s();
+  e.direction = direction_of(m.direction());
+  e.lane = m.lane();
+  e.target_lane = m.target_lane();
+  e.indicator = m.indicator();
+  e.s_m = m.s_m();
+  e.d_m = m.d_m();
+  e.speed_mps = m.speed_mps();
+  e.accel_mps2 = m.accel_mps2();
+  e.length_m = m.length_m();
+  e.width_m = m.width_m();
+  return e;
+}
+
+msg::EgoState to_msg(const EgoObservation& e, const Road& road) {
+  msg::EgoState m;
+  m.ego_id(kEgoVehicleId);
+  m.step(e.step);
+  m.time_s(e.time_s);
+  m.direction(static_cast<int16_t>(sign(e.direction)));
+  m.lane(static_cast<int16_t>(e.lane));
+  m.target_lane(static_cast<int16_t>(e.target_lane));
+  m.indicator(e.indicator);
+  m.s_m(e.s_m);
+  m.d_m(e.d_m);
+  const Pose pose = road.pose(e.s_m, e.d_m, e.direction);
+  m.x_m(pose.x_m);
+  m.y_m(pose.y_m);
+  m.heading_rad(pose.heading_rad);
+  m.speed_mps(e.speed_mps);
+  m.accel_mps2(e.accel_mps2);
+  m.length_m(e.length_m);
+  m.width_m(e.width_m);
+  return m;
+}
+
+ObservedVehicle from_msg(const msg::VehicleState& m) {
+  ObservedVehicle v;
+  v.id = m.id();
+  v.owner = ServiceId::from_code(m.owner());
+  v.step = m.step();
+  v.direction = direction_of(m.direction());
+  v.lane = m.lane();
+  v.target_lane = m.target_lane();
+  v.type_index = m.type_index();
+  v.s_m = m.s_m();
+  v.d_m = m.d_m();
+  v.speed_mps = m.speed_mps();
+  v.accel_mps2 = m.accel_mps2();
+  v.length_m = m.length_m();
+  v.width_m = m.width_m();
+  return v;
+}
+
+msg::VehicleState to_msg(const VehicleReport& r, ServiceId owner, Step step, double time_s, const Road& road) {
+  const Vehicle& v = r.vehicle;
+  msg::VehicleState m;
+  m.id(v.id);
+  m.step(step);
+  m.time_s(time_s);
+  m.owner(owner.code());
+  m.region(static_cast<uint8_t>(r.region));
+  m.type_index(v.type_index);
+  m.indicator(static_cast<uint8_t>(v.indicator()));
+  m.control(0);
+  m.direction(static_cast<int16_t>(sign(v.direction)));
+  m.lane(static_cast<int16_t>(v.lane));
+  m.target_lane(static_cast<int16_t>(v.target_lane()));
+  m.s_m(v.s_m);
+  const double d = lateral_offset_m(road, v);
+  m.d_m(d);
+  const Pose pose = road.pose(v.s_m, d, v.direction);
+  m.x_m(pose.x_m);
+  m.y_m(pose.y_m);
+  m.heading_rad(pose.heading_rad);
+  m.speed_mps(v.speed_mps);
+  m.accel_mps2(v.accel_mps2);
+  m.length_m(v.length_m);
+  m.width_m(v.width_m);
+  return m;
+}
+
+Handoff from_msg(const msg::Handoff& m) {
+  Handoff h;
+  Vehicle& v = h.vehicle;
+  v.id = m.vehicle_id();
+  v.handoff_sequence = m.handoff_sequence();
+  v.type_index = m.type_index();
+  v.direction = direction_of(m.direction());
+  v.lane = m.lane();
+  v.s_m = m.s_m();
+  v.speed_mps = m.speed_mps();
+  v.accel_mps2 = m.accel_mps2();
+  v.length_m = m.length_m();
+  v.width_m = m.width_m();
+  const msg::LaneChange& lc = m.lane_change();
+  v.lane_change.from_lane = lc.from_lane();
+  v.lane_change.to_lane = lc.to_lane();
+  v.lane_change.phase = static_cast<LaneChangePhase>(lc.phase());
+  v.lane_change.phase_elapsed_s = lc.phase_elapsed_s();
+  v.lane_change.duration_s = lc.duration_s();
+  v.lane_change.since_last_change_s = lc.since_last_change_s();
+  const msg::DriverRecord& d = m.driver();
+  DriverParams& p = v.driver;
+  p.car_following.model = static_cast<CarFollowingModel>(d.car_following_model());
+  p.lane_change = static_cast<LaneChangeModel>(d.lane_change_model());
+  p.car_following.idm = {d.desired_speed_mps(), d.time_gap_s(), d.max_accel_mps2(), d.comfort_decel_mps2(),
+                         d.min_gap_m(), d.accel_exponent()};
+  p.car_following.beta = d.beta();
+  p.mobil = {d.politeness(), d.change_threshold_mps2(), d.right_bias_mps2(), d.safe_decel_mps2()};
+  p.max_decel_mps2 = d.max_decel_mps2();
+  p.lane_change_duration_s = d.lane_change_duration_s();
+  p.desired_speed_factor = d.desired_speed_factor();
+  p.keep_right = d.keep_right();
+  p.rng_state = d.rng_state();
+  h.step = m.step();
+  h.from = ServiceId::from_code(m.from_service());
+  h.to_role = static_cast<Role>(m.to_role());
+  h.to_region = static_cast<Region>(m.to_region());
+  h.reason = static_cast<HandoffReason>(m.reason());
+  return h;
+}
+
+msg::Handoff to_msg(const Handoff& h, double time_s, const Road& road) {
+  const Vehicle& v = h.vehicle;
+  msg::Handoff m;
+  m.vehicle_id(v.id);
+  m.handoff_sequence(v.handoff_sequence);
+  m.step(h.step);
+  m.time_s(time_s);
+  m.from_service(h.from.code());
+  m.to_role(static_cast<uint8_t>(h.to_role));
+  m.to_region(static_cast<uint8_t>(h.to_region));
+  m.reason(static_cast<uint8_t>(h.reason));
+  m.type_index(v.type_index);
+  m.direction(static_cast<int16_t>(sign(v.direction)));
+  m.lane(static_cast<int16_t>(v.lane));
+  m.s_m(v.s_m);
+  m.d_m(lateral_offset_m(road, v));
+  m.speed_mps(v.speed_mps);
+  m.accel_mps2(v.accel_mps2);
+  m.length_m(v.length_m);
+  m.width_m(v.width_m);
+  msg::LaneChange& lc = m.lane_change();
+  lc.from_lane(static_cast<int16_t>(v.lane_change.from_lane));
+  lc.to_lane(static_cast<int16_t>(v.lane_change.to_lane));
+  lc.phase(static_cast<uint8_t>(v.lane_change.phase));
+  lc.phase_elapsed_s(v.lane_change.phase_elapsed_s);
+  lc.duration_s(v.lane_change.duration_s);
+  lc.since_last_change_s(v.lane_change.since_last_change_s);
+  const DriverParams& p = v.driver;
+  msg::DriverRecord& d = m.driver();
+  d.car_following_model(static_cast<uint8_t>(p.car_following.model));
+  d.lane_change_model(static_cast<uint8_t>(p.lane_change));
+  d.desired_speed_mps(p.car_following.idm.desired_speed_mps);
+  d.desired_speed_factor(p.desired_speed_factor);
+  d.time_gap_s(p.car_following.idm.time_gap_s);
+  d.max_accel_mps2(p.car_following.idm.max_accel_mps2);
+  d.comfort_decel_mps2(p.car_following.idm.comfort_decel_mps2);
+  d.min_gap_m(p.car_following.idm.min_gap_m);
+  d.accel_exponent(p.car_following.idm.accel_exponent);
+  d.beta(p.car_following.beta);
+  d.politeness(p.mobil.politeness);
+  d.change_threshold_mps2(p.mobil.change_threshold_mps2);
+  d.right_bias_mps2(p.mobil.right_bias_mps2);
+  d.safe_decel_mps2(p.mobil.safe_decel_mps2);
+  d.max_decel_mps2(p.max_decel_mps2);
+  d.lane_change_duration_s(p.lane_change_duration_s);
+  d.keep_right(p.keep_right);
+  d.rng_state(p.rng_state);
+  return m;
+}
+
+msg::StepDone make_step_done(ServiceId service, Step step, const TopicCounts& written, std::uint32_t owned) {
+  msg::StepDone m;
+  m.service(service.code());
+  m.step(step);
+  m.ego_states(written[static_cast<std::size_t>(Topic::kEgoState)]);
+  m.vehicle_states(written[static_cast<std::size_t>(Topic::kVehicleState)]);
+  m.handoffs(written[static_cast<std::size_t>(Topic::kHandoff)]);
+  m.play_status(written[static_cast<std::size_t>(Topic::kPlayStatus)]);
+  m.owned_vehicles(owned);
+  return m;
+}
+
+TopicCounts counts_of(const msg::StepDone& m) {
+  TopicCounts c{};
+  c[static_cast<std::size_t>(Topic::kEgoState)] = m.ego_states();
+  c[static_cast<std::size_t>(Topic::kVehicleState)] = m.vehicle_states();
+  c[static_cast<std::size_t>(Topic::kHandoff)] = m.handoffs();
+  c[static_cast<std::size_t>(Topic::kPlayStatus)] = m.play_status();
+  return c;
+}
+
+SampleLimits SampleLimits::of(const ScenarioConfig& sc) {
+  SampleLimits l;
+  l.lanes_forward = sc.road.lanes_forward;
+  l.lanes_backward = sc.road.lanes_backward;
+  l.vehicle_types = static_cast<int>(sc.vehicle_types.size());
+  return l;
+}
+
+std::optional<std::string> check(const msg::EgoState& m, const SampleLimits& limits) {
+  if (!all_finite({m.time_s(), m.s_m(), m.d_m(), m.x_m(), m.y_m(), m.heading_rad(), m.speed_mps(), m.accel_mps2(),
+                   m.length_m(), m.width_m()})) {
+    return "a value is not finite";
+  }
+  if (auto e = check_lane(m.direction(), m.lane(), m.target_lane(), limits)) return e;
+  if (auto e = check_motion(m.speed_mps(), m.accel_mps2(), limits)) return e;
+  if (m.length_m() <= 0.0 || m.width_m() <= 0.0) return "length and width must be positive";
+  return std::nullopt;
+}
+
+std::optional<std::string> check(const msg::VehicleState& m, const SampleLimits& limits) {
+  if (!all_finite({m.time_s(), m.s_m(), m.d_m(), m.x_m(), m.y_m(), m.heading_rad(), m.speed_mps(), m.accel_mps2(),
+                   m.length_m(), m.width_m()})) {
+    return "a value is not finite";
+  }
+  if (m.id() == kEgoVehicleId) return "vehicle id 0 is reserved for the ego";
+  if (auto e = check_lane(m.direction(), m.lane(), m.target_lane(), limits)) return e;
+  if (auto e = check_motion(m.speed_mps(), m.accel_mps2(), limits)) return e;
+  if (m.type_index() >= limits.vehicle_types) return "unknown vehicle type " + std::to_string(m.type_index());
+  if (m.length_m() <= 0.0 || m.width_m() <= 0.0) return "length and width must be positive";
+  return std::nullopt;
+}
+
+std::optional<std::string> check(const msg::Handoff& m, const SampleLimits& limits) {
+  if (!all_finite({m.time_s(), m.s_m(), m.speed_mps(), m.accel_mps2(), m.length_m(), m.width_m(),
+                   m.driver().desired_speed_mps(), m.driver().time_gap_s(), m.driver().max_accel_mps2(),
+                   m.driver().comfort_decel_mps2(), m.driver().min_gap_m()})) {
+    return "a value is not finite";
+  }
+  if (m.vehicle_id() == kEgoVehicleId) return "vehicle id 0 is reserved for the ego";
+  if (m.handoff_sequence() == 0) return "handoff sequence numbers start at 1";
+  const int lane_to = m.lane_change().phase() == 0 ? m.lane() : m.lane_change().to_lane();
+  if (auto e = check_lane(m.direction(), m.lane(), lane_to, limits)) return e;
+  if (auto e = check_motion(m.speed_mps(), m.accel_mps2(), limits)) return e;
+  if (m.type_index() >= limits.vehicle_types) return "unknown vehicle type " + std::to_string(m.type_index());
+  if (m.driver().desired_speed_mps() <= 0.0 || m.driver().time_gap_s() <= 0.0 || m.driver().max_accel_mps2() <= 0.0 ||
+      m.driver().comfort_decel_mps2() <= 0.0) {
+    return "driver parameters must be positive";
+  }
+  return std::nullopt;
+}
+
+}  // namespace entourage::dds

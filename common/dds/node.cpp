@@ -1,0 +1,85 @@
+#include "dds/node.hpp"
+
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/domain/qos/DomainParticipantQos.hpp>
+
+namespace entourage::dds {
+
+namespace {
+constexpr const char* kParticipantProfile = "entourage_participant";
+
+std::string profile_of(Topic t, const char* side) { return std::string(info(t).profile) + "_" + side; }
+}  // namespace
+
+Node::Node(int domain, const std::string& qos_file, const std::string& participant_name) {
+  auto* factory = fdds::DomainParticipantFactory::get_instance();
+  if (factory->load_XML_profiles_file(qos_file) != ReturnCode_t::RETCODE_OK) {
+    throw DdsError("cannot load the QoS profiles from " + qos_file);
+  }
+  fdds::DomainParticipantQos qos;
+  if (factory->get_participant_qos_from_profile(kParticipantProfile, qos) != ReturnCode_t::RETCODE_OK) {
+    throw DdsError(std::string("the QoS file ") + qos_file + " has no participant profile " + kParticipantProfile);
+  }
+  qos.name(participant_name);
+  participant_ = factory->create_participant(static_cast<fdds::DomainId_t>(domain), qos);
+  if (participant_ == nullptr) throw DdsError("cannot join DDS domain " + std::to_string(domain));
+  publisher_ = participant_->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
+  subscriber_ = participant_->create_subscriber(fdds::SUBSCRIBER_QOS_DEFAULT);
+  if (publisher_ == nullptr || subscriber_ == nullptr) throw DdsError("cannot create a publisher or subscriber");
+}
+
+Node::~Node() {
+  if (participant_ == nullptr) return;
+  participant_->delete_contained_entities();
+  fdds::DomainParticipantFactory::get_instance()->delete_participant(participant_);
+}
+
+fdds::Topic* Node::register_topic(Topic t, const std::string& type_name) {
+  fdds::Topic* topic = participant_->create_topic(std::string(info(t).name), type_name, fdds::TOPIC_QOS_DEFAULT);
+  if (topic == nullptr) throw DdsError("cannot create topic " + std::string(info(t).name));
+  topics_[t] = topic;
+  return topic;
+}
+
+fdds::DataWriter* Node::create_writer(Topic t, fdds::Topic* topic) {
+  fdds::DataWriterQos qos;
+  if (publisher_->get_datawriter_qos_from_profile(profile_of(t, "writer"), qos) != ReturnCode_t::RETCODE_OK) {
+    throw DdsError("no QoS profile " + profile_of(t, "writer"));
+  }
+  // Not settable from XML in Fast DDS 2.9: a vehicle handed to another owner must not be disposed.
+  qos.writer_data_lifecycle().autodispose_unregistered_instances = false;
+  fdds::DataWriter* w = publisher_->create_datawriter(topic, qos);
+  if (w == nullptr) throw DdsError("cannot create a writer for " + std::string(info(t).name));
+  writers_[t] = w;
+  return w;
+}
+
+void Node::create_reader(Topic t, fdds::Topic* topic, fdds::DataReaderListener* listener) {
+  fdds::DataReaderQos qos;
+  if (subscriber_->get_datareader_qos_from_profile(profile_of(t, "reader"), qos) != ReturnCode_t::RETCODE_OK) {
+    throw DdsError("no QoS profile " + profile_of(t, "reader"));
+  }
+  fdds::DataReader* r = subscriber_->create_datareader(topic, qos, listener, fdds::StatusMask::data_available());
+  if (r == nullptr) throw DdsError("cannot create a reader for " + std::string(info(t).name));
+  readers_[t] = r;
+}
+
+// Fast DDS 2.9 does not implement get_matched_publications/subscriptions (RETCODE_UNSUPPORTED),
+// and its matched counts include the participant's own endpoint of the other kind on the topic.
+int Node::matched_writers(Topic t) const {
+  auto it = readers_.find(t);
+  if (it == readers_.end()) return 0;
+  fdds::SubscriptionMatchedStatus s;
+  it->second->get_subscription_matched_status(s);
+  return s.current_count - (writers_.count(t) != 0 ? 1 : 0);
+}
+
+int Node::matched_readers(Topic t) const {
+  auto it = writers_.find(t);
+  if (it == writers_.end()) return 0;
+  fdds::PublicationMatchedStatus s;
+  it->second->get_publication_matched_status(s);
+  return s.current_count - (readers_.count(t) != 0 ? 1 : 0);
+}
+
+}  // namespace entourage::dds

@@ -1,0 +1,107 @@
+#pragma once
+// The DDS shell of a region service (micro, meso): subscribe, convert, call the core, publish.
+// The core is anything with `StepOutput step(const StepInput&)`, `fleet()` and `counters()`.
+
+#include <algorithm>
+#include <vector>
+
+#include "entourage_msg/EgoStatePubSubTypes.h"
+#include "entourage_msg/HandoffPubSubTypes.h"
+#include "entourage_msg/ServiceStatusPubSubTypes.h"
+#include "entourage_msg/StepDonePubSubTypes.h"
+#include "entourage_msg/VehicleStatePubSubTypes.h"
+
+#include "dds/convert.hpp"
+#include "dds/inbox.hpp"
+#include "dds/node.hpp"
+#include "dds/runtime.hpp"
+#include "road/road.hpp"
+#include "traffic/step_io.hpp"
+
+namespace entourage::dds {
+
+// Gathers the inputs of step k: the ego at k and k-1, every vehicle published for k-1 (by the
+// others, from the inbox; by this service, from what it published), and the handoffs received.
+inline StepInput gather_inputs(Step k, Inbox& inbox, const std::vector<ObservedVehicle>& own_prev) {
+  StepInput in;
+  in.step = k;
+  in.ego = from_msg(*inbox.ego(k));
+  if (k > 0) {
+    if (auto e = inbox.ego(k - 1)) in.ego_prev = from_msg(*e);
+    for (const auto& m : inbox.take_handoffs_upto(k - 1)) in.handoffs.push_back(from_msg(m));
+    const Bucket b = inbox.take(k - 1);  // after the handoffs, which it would take too
+    in.world_prev.reserve(b.vehicles.size() + own_prev.size());
+    for (const auto& m : b.vehicles) in.world_prev.push_back(from_msg(m));
+  }
+  in.world_prev.insert(in.world_prev.end(), own_prev.begin(), own_prev.end());
+  // Arrival order over DDS is not deterministic; the order a core sees must be.
+  std::sort(in.world_prev.begin(), in.world_prev.end(),
+            [](const ObservedVehicle& a, const ObservedVehicle& b) { return a.id < b.id; });
+  return in;
+}
+
+// Publishes a step's vehicle states and handoffs; returns the counts and remembers the states
+// as this service's part of the world for the next step.
+class RegionPublisher {
+ public:
+  RegionPublisher(Node& node, ServiceId self, const Road& road)
+      : self_(self),
+        road_(road),
+        states_(node.writer<msg::VehicleStatePubSubType>(Topic::kVehicleState)),
+        handoffs_(node.writer<msg::HandoffPubSubType>(Topic::kHandoff)) {}
+
+  TopicCounts publish(Step k, double time_s, const StepOutput& out) {
+    TopicCounts written{};
+    own_.clear();
+    for (const VehicleReport& r : out.states) {
+      const msg::VehicleState m = to_msg(r, self_, k, time_s, road_);
+      states_.write(m);
+      own_.push_back(from_msg(m));
+      ++written[static_cast<std::size_t>(Topic::kVehicleState)];
+    }
+    for (const Handoff& h : out.handoffs) {
+      handoffs_.write(to_msg(h, time_s, road_));
+      ++written[static_cast<std::size_t>(Topic::kHandoff)];
+      msg::VehicleState key;  // the vehicle leaves this owner: release its instance
+      key.id(h.vehicle.id);
+      if (h.from == self_) states_.unregister(key);
+    }
+    return written;
+  }
+
+  const std::vector<ObservedVehicle>& own() const { return own_; }
+
+ private:
+  ServiceId self_;
+  const Road& road_;
+  Writer<msg::VehicleStatePubSubType> states_;
+  Writer<msg::HandoffPubSubType> handoffs_;
+  std::vector<ObservedVehicle> own_;
+};
+
+// Subscribes an inbox to the topics a service of `role` reads.
+void subscribe(Node& node, Inbox& inbox, Role role);
+
+template <class Core>
+int run_region_service(const ServiceContext& ctx, Core& core) {
+  const ScenarioConfig& sc = ctx.scenario.config;
+  const Road road(sc.road);
+  Inbox inbox(ctx.options.peer_ids, ctx.id, SampleLimits::of(sc));
+  Node node(ctx.options.domain, ctx.options.qos_file, to_string(ctx.id));
+  subscribe(node, inbox, ctx.id.role);
+  RegionPublisher publisher(node, ctx.id, road);
+  const auto done = node.writer<msg::StepDonePubSubType>(Topic::kStepDone);
+  StatusReporter status(node, ctx.id);
+  if (!wait_for_discovery(node, ctx.id, ctx.options.peer_ids, status, ctx.options.discovery_timeout_s)) return 1;
+  run_step_loop(
+      ctx, inbox, done, status,
+      [&](Step k) {
+        const StepOutput out = core.step(gather_inputs(k, inbox, publisher.own()));
+        status.set_counters(inbox.bad_samples(), core.counters().duplicate_handoffs);
+        return publisher.publish(k, static_cast<double>(k) * sc.step_s, out);
+      },
+      [&] { return static_cast<std::uint32_t>(core.fleet().size()); });
+  return 0;
+}
+
+}  // namespace entourage::dds

@@ -1,0 +1,28 @@
+#pragma once
+// The design's invariants, checked on recorded rows (a recording or its CSV export):
+//   one_owner        no vehicle is published twice in a step (one owner per live vehicle)
+//   continuity       a vehicle is present in every step between its first and last appearance
+//   no_pop_in        no vehicle appears in the inner region (except those of the initial fill,
+//                    at the first step with vehicles) and none disappears there (except at the end)
+//   no_overlap       no two vehicles (ego included) of a direction overlap (length x width boxes)
+//   ego_interacts    the ego is the leader of a micro vehicle in some step, and a micro vehicle
+//                    the ego's leader in some step (the ego is a vehicle like any other to micro)
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "recording/tables.hpp"
+
+namespace entourage::recording {
+
+struct CheckResult {
+  std::string name;
+  bool passed = false;
+  std::uint64_t violations = 0;
+  std::string detail;  // the first violations, or what was measured
+};
+
+std::vector<CheckResult> check_invariants(const Tables& t, double ego_length_m, double ego_width_m);
+
+}  // namespace entourage::recording

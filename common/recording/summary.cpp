@@ -1,0 +1,97 @@
+#include "recording/summary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "core/units.hpp"
+#include "road/window.hpp"
+#include "traffic/handoff.hpp"
+
+namespace entourage::recording {
+
+double FlowMeasurement::relative_error() const {
+  return demand_veh_per_h > 0.0 ? (measured_veh_per_h - demand_veh_per_h) / demand_veh_per_h : 0.0;
+}
+
+FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int direction, double spacing) {
+  FlowMeasurement f;
+  f.demand_veh_per_h = per_second_to_per_hour(sc.flow(direction > 0 ? Direction::kForward : Direction::kBackward).flow_veh_per_s);
+  std::unordered_map<std::uint64_t, const EgoRow*> ego_at;
+  for (const auto& e : t.ego) ego_at[e.step] = &e;
+  std::unordered_map<std::uint32_t, double> last_s;
+  std::unordered_map<std::uint32_t, std::uint64_t> last_step;
+  std::size_t i = 0;
+  while (i < t.vehicles.size()) {
+    const std::uint64_t step = t.vehicles[i].step;
+    std::size_t j = i;
+    while (j < t.vehicles.size() && t.vehicles[j].step == step) ++j;
+    auto now = ego_at.find(step);
+    auto before = step > 0 ? ego_at.find(step - 1) : ego_at.end();
+    if (now != ego_at.end() && before != ego_at.end()) {
+      const WindowBounds w0 = WindowBounds::around(before->second->s_m, sc.window);
+      const WindowBounds w1 = WindowBounds::around(now->second->s_m, sc.window);
+      const double lo = std::max(w0.inner_rear_m, w1.inner_rear_m);
+      const double hi = std::min(w0.inner_front_m, w1.inner_front_m);
+      const double first = std::ceil(lo / spacing);
+      const double last = std::floor(hi / spacing);
+      if (last >= first) {
+        f.observed_s += (last - first + 1.0) * sc.step_s;
+        for (std::size_t k = i; k < j; ++k) {
+          const VehicleRow& r = t.vehicles[k];
+          if (r.direction != direction) continue;
+          auto it = last_s.find(r.id);
+          if (it == last_s.end() || last_step[r.id] + 1 != step) continue;
+          const double a = std::min(it->second, r.s_m);
+          const double b = std::max(it->second, r.s_m);
+          // detectors x with a < x <= b (forward) or a <= x < b (backward), within [lo, hi]
+          const double from = std::max(first, direction > 0 ? std::floor(a / spacing) + 1.0 : std::ceil(a / spacing));
+          const double to = std::min(last, direction > 0 ? std::floor(b / spacing) : std::ceil(b / spacing) - 1.0);
+          if (to >= from) f.crossings += static_cast<std::uint64_t>(to - from + 1.0);
+        }
+      }
+    }
+    for (std::size_t k = i; k < j; ++k) {
+      last_s[t.vehicles[k].id] = t.vehicles[k].s_m;
+      last_step[t.vehicles[k].id] = step;
+    }
+    i = j;
+  }
+  if (f.observed_s > 0.0) f.measured_veh_per_h = per_second_to_per_hour(static_cast<double>(f.crossings) / f.observed_s);
+  return f;
+}
+
+RunSummary summarize(const Recording& r, const Tables& t, const ScenarioConfig& sc, double spacing) {
+  RunSummary s;
+  s.steps = t.ego.empty() ? 0 : t.ego.back().step;
+  s.simulated_s = static_cast<double>(s.steps) * sc.step_s;
+  for (const auto& h : r.handoffs) {
+    const Role from = ServiceId::from_code(h.from_service()).role;
+    if (from == Role::kGenerator) {
+      ++s.generated;
+      if (h.reason() == static_cast<std::uint8_t>(HandoffReason::kInitialFill)) ++s.initial_fill;
+    } else if (static_cast<Role>(h.to_role()) == Role::kNone) {
+      ++s.removed;
+    } else {
+      ++s.transfers;
+    }
+  }
+  std::map<std::string, double> sum;
+  for (const auto& v : t.vehicles) {
+    sum[v.region] += v.speed_mps;
+    ++s.samples_in[v.region];
+  }
+  s.vehicle_samples = t.vehicles.size();
+  for (const auto& [region, total] : sum) s.mean_speed_mps[region] = total / static_cast<double>(s.samples_in[region]);
+  s.forward = measure_flow(t, sc, 1, spacing);
+  s.backward = measure_flow(t, sc, -1, spacing);
+  if (!t.ego.empty()) {
+    double total = 0.0;
+    for (const auto& e : t.ego) total += e.speed_mps;
+    s.ego_mean_speed_mps = total / static_cast<double>(t.ego.size());
+    s.ego_distance_m = t.ego.back().s_m - t.ego.front().s_m;
+  }
+  return s;
+}
+
+}  // namespace entourage::recording

@@ -1,0 +1,50 @@
+#pragma once
+// What a run produced, measured from its recording: vehicles generated and removed, handoffs,
+// mean speed per region, and the flow of each direction measured by virtual detectors in the
+// inner region against the demand.
+//
+// Flow: detectors stand every detector_spacing_m along the road. Over a step, a detector counts
+// the vehicles that cross it while it lies inside the inner region at both ends of the step, and
+// it observes for dt. Flow = crossings / observation time, summed over all detectors.
+
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "recording/recording.hpp"
+#include "recording/tables.hpp"
+#include "scenario/config.hpp"
+
+namespace entourage::recording {
+
+struct FlowMeasurement {
+  double demand_veh_per_h = 0.0;
+  double measured_veh_per_h = 0.0;
+  std::uint64_t crossings = 0;
+  double observed_s = 0.0;  // detector-seconds
+
+  double relative_error() const;  // (measured - demand) / demand; 0 if no demand
+};
+
+struct RunSummary {
+  std::uint64_t steps = 0;
+  double simulated_s = 0.0;
+  std::uint64_t generated = 0;     // births and initial fill
+  std::uint64_t initial_fill = 0;
+  std::uint64_t removed = 0;       // retired beyond the window's edges
+  std::uint64_t transfers = 0;     // handoffs between regions
+  std::uint64_t vehicle_samples = 0;
+  std::map<std::string, double> mean_speed_mps;     // per region name
+  std::map<std::string, std::uint64_t> samples_in;  // per region name
+  FlowMeasurement forward;
+  FlowMeasurement backward;
+  double ego_mean_speed_mps = 0.0;
+  double ego_distance_m = 0.0;
+};
+
+RunSummary summarize(const Recording& r, const Tables& t, const ScenarioConfig& sc, double detector_spacing_m = 25.0);
+
+// FlowMeasurement for one direction from rows alone (also used by tests on exported CSV).
+FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int direction, double detector_spacing_m);
+
+}  // namespace entourage::recording

@@ -1,0 +1,133 @@
+#pragma once
+// A scenario resolved into plain SI structs: defaults applied, km/h and veh/h converted, names
+// looked up. Service cores take these, never the protobuf messages, so a core does not depend on
+// the file format and every conversion happens once, here.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/ids.hpp"
+
+namespace entourage {
+
+struct NormalDist {
+  double mean = 0.0;
+  double sd = 0.0;
+  double min = 0.0;
+  double max = 0.0;
+};
+
+struct SegmentConfig {
+  double length_m = 0.0;
+  double curvature_per_m = 0.0;
+};
+
+struct SpeedZoneConfig {
+  double start_m = 0.0;
+  double end_m = 0.0;
+  double limit_mps = 0.0;
+};
+
+enum class RoadKind { kFreeway, kRural };
+
+struct RoadConfig {
+  RoadKind kind = RoadKind::kFreeway;
+  double length_m = 0.0;
+  int lanes_forward = 2;
+  int lanes_backward = 2;
+  double lane_width_m = 3.5;
+  double median_width_m = 0.0;
+  double speed_limit_mps = 0.0;
+  std::vector<SegmentConfig> segments;
+  std::vector<SpeedZoneConfig> speed_zones;
+
+  int lanes(Direction d) const { return d == Direction::kForward ? lanes_forward : lanes_backward; }
+};
+
+struct WindowConfig {
+  double inner_ahead_m = 400.0;
+  double inner_behind_m = 200.0;
+  double outer_ahead_m = 600.0;
+  double outer_behind_m = 400.0;
+  double handoff_hysteresis_m = 10.0;
+};
+
+// Population of drivers of one vehicle type: each parameter drawn per driver.
+struct DriverPopulation {
+  std::string car_following = "idm";
+  std::string lane_change = "mobil";
+  NormalDist desired_speed_mps;
+  NormalDist time_gap_s;
+  NormalDist max_accel_mps2;
+  NormalDist comfort_decel_mps2;
+  NormalDist min_gap_m;
+  double accel_exponent = 4.0;
+  double beta = 1.35;
+  NormalDist politeness;
+  double change_threshold_mps2 = 0.1;
+  double right_bias_mps2 = 0.3;
+  double safe_decel_mps2 = 4.0;
+  NormalDist lane_change_duration_s;
+};
+
+struct VehicleTypeConfig {
+  std::string name;
+  double length_m = 4.5;
+  double width_m = 1.8;
+  double max_decel_mps2 = 8.0;
+  bool keep_right = false;
+  DriverPopulation driver;
+};
+
+struct FlowConfig {
+  double flow_veh_per_s = 0.0;
+  std::vector<double> type_shares;  // per vehicle type index, normalised to sum 1 (all 0 if no flow)
+};
+
+struct EgoDriverConfig {
+  bool use_speed_profile = false;
+  double desired_speed_mps = 110.0 / 3.6;
+  double time_gap_s = 1.5;
+  double max_accel_mps2 = 1.0;
+  double comfort_decel_mps2 = 1.5;
+  double min_gap_m = 2.0;
+  bool lane_changes = true;
+  double politeness = 0.2;
+  std::vector<std::pair<double, double>> profile;  // (s_m, speed_mps), increasing s
+};
+
+struct EgoConfig {
+  double start_s_m = 1500.0;
+  int lane = 0;
+  double start_speed_mps = -1.0;  // < 0: the driver's desired speed at the start
+  double length_m = 4.6;
+  double width_m = 1.8;
+  EgoDriverConfig driver;
+};
+
+struct PlayConfig {
+  std::uint32_t id = 0;
+  std::string name;
+  double trigger1_s_m = 0.0;
+  double trigger2_s_m = 0.0;
+};
+
+struct ScenarioConfig {
+  std::string name;
+  double step_s = 0.1;
+  double duration_s = 300.0;
+  std::uint64_t seed = 1;
+  RoadConfig road;
+  WindowConfig window;
+  std::vector<VehicleTypeConfig> vehicle_types;
+  FlowConfig forward;
+  FlowConfig backward;
+  EgoConfig ego;
+  std::vector<PlayConfig> plays;
+
+  const FlowConfig& flow(Direction d) const { return d == Direction::kForward ? forward : backward; }
+  std::uint64_t steps() const;  // number of steps in duration_s
+};
+
+}  // namespace entourage

@@ -1,0 +1,133 @@
+#include "scenario/resolve.hpp"
+
+#include "core/units.hpp"
+#include "scenario/scenario.pb.h"
+
+namespace entourage::scenario {
+
+namespace {
+
+// Defaults of driver parameters left out of a scenario (see scenario.proto).
+constexpr double kDefaultTimeGap_s = 1.5;
+constexpr double kDefaultMaxAccel_mps2 = 1.0;
+constexpr double kDefaultComfortDecel_mps2 = 1.5;
+constexpr double kDefaultMinGap_m = 2.0;
+constexpr double kDefaultPoliteness = 0.2;
+constexpr double kDefaultLaneChangeDuration_s = 4.0;
+
+NormalDist to_dist(const Normal& n, double scale = 1.0) {
+  NormalDist d;
+  d.mean = n.mean() * scale;
+  d.sd = n.sd() * scale;
+  d.min = (n.has_min() ? n.min() : n.mean() - 3.0 * n.sd()) * scale;
+  d.max = (n.has_max() ? n.max() : n.mean() + 3.0 * n.sd()) * scale;
+  return d;
+}
+
+NormalDist dist_or(bool has, const Normal& n, double constant) {
+  if (has) return to_dist(n);
+  return NormalDist{constant, 0.0, constant, constant};
+}
+
+DriverPopulation resolve_driver(const Driver& d) {
+  DriverPopulation p;
+  p.car_following = d.car_following();
+  p.lane_change = d.lane_change();
+  p.desired_speed_mps = to_dist(d.desired_speed_kph(), 1.0 / kKphPerMps);
+  p.time_gap_s = dist_or(d.has_time_gap_s(), d.time_gap_s(), kDefaultTimeGap_s);
+  p.max_accel_mps2 = dist_or(d.has_max_accel_mps2(), d.max_accel_mps2(), kDefaultMaxAccel_mps2);
+  p.comfort_decel_mps2 = dist_or(d.has_comfort_decel_mps2(), d.comfort_decel_mps2(), kDefaultComfortDecel_mps2);
+  p.min_gap_m = dist_or(d.has_min_gap_m(), d.min_gap_m(), kDefaultMinGap_m);
+  p.accel_exponent = d.accel_exponent();
+  p.beta = d.beta();
+  p.politeness = dist_or(d.has_politeness(), d.politeness(), kDefaultPoliteness);
+  p.change_threshold_mps2 = d.change_threshold_mps2();
+  p.right_bias_mps2 = d.right_bias_mps2();
+  p.safe_decel_mps2 = d.safe_decel_mps2();
+  p.lane_change_duration_s =
+      dist_or(d.has_lane_change_duration_s(), d.lane_change_duration_s(), kDefaultLaneChangeDuration_s);
+  return p;
+}
+
+FlowConfig resolve_flow(const Flow& f, const Scenario& s) {
+  FlowConfig out;
+  out.flow_veh_per_s = per_hour_to_per_second(f.flow_veh_per_h());
+  out.type_shares.assign(static_cast<std::size_t>(s.vehicle_type_size()), 0.0);
+  double total = 0.0;
+  for (const auto& sh : f.mix()) {
+    for (int i = 0; i < s.vehicle_type_size(); ++i) {
+      if (s.vehicle_type(i).name() == sh.type()) out.type_shares[static_cast<std::size_t>(i)] += sh.share();
+    }
+    total += sh.share();
+  }
+  for (auto& x : out.type_shares) x = total > 0.0 ? x / total : 0.0;
+  return out;
+}
+
+RoadConfig resolve_road(const Road& r) {
+  RoadConfig c;
+  c.kind = r.kind() == Road::RURAL ? RoadKind::kRural : RoadKind::kFreeway;
+  c.length_m = r.length_m();
+  c.lanes_forward = r.lanes_forward();
+  c.lanes_backward = r.lanes_backward();
+  c.lane_width_m = r.lane_width_m();
+  c.median_width_m = r.median_width_m();
+  c.speed_limit_mps = kph_to_mps(r.speed_limit_kph());
+  for (const auto& seg : r.segment()) c.segments.push_back({seg.length_m(), seg.curvature_per_m()});
+  for (const auto& z : r.speed_zone()) c.speed_zones.push_back({z.start_m(), z.end_m(), kph_to_mps(z.limit_kph())});
+  return c;
+}
+
+EgoConfig resolve_ego(const Ego& e) {
+  EgoConfig c;
+  c.start_s_m = e.start_s_m();
+  c.lane = e.lane();
+  c.start_speed_mps = e.has_start_speed_kph() ? kph_to_mps(e.start_speed_kph()) : -1.0;
+  c.length_m = e.length_m();
+  c.width_m = e.width_m();
+  const EgoIdmDriver& d = e.idm();  // defaults when the ego uses a speed profile
+  c.driver.desired_speed_mps = kph_to_mps(d.desired_speed_kph());
+  c.driver.time_gap_s = d.time_gap_s();
+  c.driver.max_accel_mps2 = d.max_accel_mps2();
+  c.driver.comfort_decel_mps2 = d.comfort_decel_mps2();
+  c.driver.min_gap_m = d.min_gap_m();
+  c.driver.lane_changes = d.lane_changes();
+  c.driver.politeness = d.politeness();
+  if (e.has_speed_profile()) {
+    c.driver.use_speed_profile = true;
+    for (const auto& p : e.speed_profile().point()) c.driver.profile.emplace_back(p.s_m(), kph_to_mps(p.speed_kph()));
+  }
+  return c;
+}
+
+}  // namespace
+
+ScenarioConfig resolve(const Scenario& s) {
+  ScenarioConfig c;
+  c.name = s.name();
+  c.step_s = s.step_s();
+  c.duration_s = s.duration_s();
+  c.seed = s.seed();
+  c.road = resolve_road(s.road());
+  const Window& w = s.window();
+  c.window = {w.inner_ahead_m(), w.inner_behind_m(), w.outer_ahead_m(), w.outer_behind_m(), w.handoff_hysteresis_m()};
+  for (const auto& t : s.vehicle_type()) {
+    VehicleTypeConfig vt;
+    vt.name = t.name();
+    vt.length_m = t.length_m();
+    vt.width_m = t.width_m();
+    vt.max_decel_mps2 = t.max_decel_mps2();
+    vt.keep_right = t.keep_right();
+    vt.driver = resolve_driver(t.driver());
+    c.vehicle_types.push_back(vt);
+  }
+  c.forward = resolve_flow(s.demand().forward(), s);
+  c.backward = resolve_flow(s.demand().backward(), s);
+  c.ego = resolve_ego(s.ego());
+  std::uint32_t id = 1;
+  for (const auto& p : s.play()) c.plays.push_back({id++, p.name(), p.trigger1_s_m(), p.trigger2_s_m()});
+  return c;
+}
+
+}  // namespace entourage::scenario
+

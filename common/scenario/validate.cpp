@@ -1,0 +1,322 @@
+#include "scenario/validate.hpp"
+
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "behaviour/model_registry.hpp"
+#include "scenario/scenario.pb.h"
+
+namespace entourage::scenario {
+
+namespace {
+
+using google::protobuf::Message;
+using google::protobuf::TextFormat;
+
+// Limits that keep a scenario physically meaningful (and the models in their valid range).
+constexpr double kMaxStep_s = 1.0;
+constexpr int kMaxLanes = 4;
+constexpr double kMinLaneWidth_m = 2.0;
+constexpr double kMaxLaneWidth_m = 6.0;
+constexpr double kMaxSpeedLimit_kph = 250.0;
+constexpr double kMaxCurvature_per_m = 1.0 / 15.0;  // tighter than any road bend
+constexpr double kMaxVehicleLength_m = 30.0;
+constexpr double kMaxVehicleWidth_m = 3.5;
+constexpr double kMaxFlow_veh_per_h = 10000.0;
+constexpr double kMaxDesiredSpeed_kph = 250.0;
+
+struct Location {
+  int line = 0;
+  int column = 0;
+};
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+// A position in the message tree: the message, where its fields were written, and its path.
+class Cursor {
+ public:
+  Cursor(const Message& msg, const TextFormat::ParseInfoTree* tree, std::string path, Location where,
+         const std::string& file, std::vector<Problem>* problems)
+      : msg_(msg), tree_(tree), path_(std::move(path)), where_(where), file_(file), problems_(problems) {}
+
+  Location loc(const std::string& field, int index = -1) const {
+    const auto* fd = msg_.GetDescriptor()->FindFieldByName(field);
+    if (tree_ != nullptr && fd != nullptr) {
+      const auto l = tree_->GetLocation(fd, fd->is_repeated() ? std::max(index, 0) : -1);
+      if (l.line >= 0) return {l.line + 1, l.column + 1};
+    }
+    return where_;
+  }
+
+  std::string path_of(const std::string& field, int index = -1) const {
+    std::string p = path_.empty() ? field : path_ + "." + field;
+    if (index >= 0) p += "[" + std::to_string(index) + "]";
+    return p;
+  }
+
+  Cursor child(const Message& sub, const std::string& field, int index = -1) const {
+    const auto* fd = msg_.GetDescriptor()->FindFieldByName(field);
+    const TextFormat::ParseInfoTree* t = nullptr;
+    if (tree_ != nullptr && fd != nullptr) t = tree_->GetTreeForNested(fd, fd->is_repeated() ? index : -1);
+    return Cursor(sub, t, path_of(field, index), loc(field, index), file_, problems_);
+  }
+
+  void fail(const std::string& field, const std::string& message, int index = -1) const {
+    const Location l = loc(field, index);
+    problems_->push_back({file_, l.line, l.column, path_of(field, index), message});
+  }
+  void fail_here(const std::string& message) const {
+    problems_->push_back({file_, where_.line, where_.column, path_, message});
+  }
+
+  bool has(const std::string& field) const {
+    const auto* fd = msg_.GetDescriptor()->FindFieldByName(field);
+    return fd != nullptr && msg_.GetReflection()->HasField(msg_, fd);
+  }
+
+  bool require(const std::string& field) const {
+    if (has(field)) return true;
+    fail(field, "is required");
+    return false;
+  }
+
+  // value in [lo, hi]; `lo_open` makes the lower bound exclusive.
+  void range(const std::string& field, double value, double lo, double hi, bool lo_open = false) const {
+    if (!std::isfinite(value) || value < lo || (lo_open && value == lo) || value > hi) {
+      fail(field, "must be in " + std::string(lo_open ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + "] (got " +
+                      fmt(value) + ")");
+    }
+  }
+
+ private:
+  const Message& msg_;
+  const TextFormat::ParseInfoTree* tree_;
+  std::string path_;
+  Location where_;
+  const std::string& file_;
+  std::vector<Problem>* problems_;
+};
+
+// A Normal: mean present, sd >= 0, min <= mean <= max, and every value it can draw in [lo, hi].
+void check_normal(const Cursor& c, const Normal& n, double lo, double hi, bool lo_open) {
+  if (!c.require("mean")) return;
+  c.range("mean", n.mean(), lo, hi, lo_open);
+  c.range("sd", n.sd(), 0.0, hi);
+  const double mn = n.has_min() ? n.min() : n.mean() - 3.0 * n.sd();
+  const double mx = n.has_max() ? n.max() : n.mean() + 3.0 * n.sd();
+  if (n.has_min()) c.range("min", mn, lo, hi, lo_open);
+  if (n.has_max()) c.range("max", mx, lo, hi, lo_open);
+  if (mn > mx) c.fail("min", "must not exceed max (" + fmt(mn) + " > " + fmt(mx) + ")");
+  if (n.has_min() && n.mean() < mn) c.fail("mean", "is below min");
+  if (n.has_max() && n.mean() > mx) c.fail("mean", "is above max");
+  if (!n.has_min() && n.sd() > 0.0 && (mn < lo || (lo_open && mn <= lo))) {
+    c.fail("sd", "mean - 3 sd = " + fmt(mn) + " leaves the valid range; set min");
+  }
+}
+
+void check_optional_normal(const Cursor& c, const std::string& field, const Normal& n, double lo, double hi,
+                           bool lo_open) {
+  if (c.has(field)) check_normal(c.child(n, field), n, lo, hi, lo_open);
+}
+
+void check_driver(const Cursor& c, const Driver& d) {
+  if (!car_following_model_by_name(d.car_following())) {
+    c.fail("car_following", "unknown model \"" + d.car_following() + "\" (see `entourage models`)");
+  }
+  if (!lane_change_model_by_name(d.lane_change())) {
+    c.fail("lane_change", "unknown model \"" + d.lane_change() + "\" (see `entourage models`)");
+  }
+  if (c.require("desired_speed_kph")) {
+    check_normal(c.child(d.desired_speed_kph(), "desired_speed_kph"), d.desired_speed_kph(), 0.0,
+                 kMaxDesiredSpeed_kph, true);
+  }
+  check_optional_normal(c, "time_gap_s", d.time_gap_s(), 0.0, 10.0, true);
+  check_optional_normal(c, "max_accel_mps2", d.max_accel_mps2(), 0.0, 10.0, true);
+  check_optional_normal(c, "comfort_decel_mps2", d.comfort_decel_mps2(), 0.0, 10.0, true);
+  check_optional_normal(c, "min_gap_m", d.min_gap_m(), 0.0, 20.0, false);
+  check_optional_normal(c, "politeness", d.politeness(), 0.0, 1.0, false);
+  check_optional_normal(c, "lane_change_duration_s", d.lane_change_duration_s(), 0.0, 15.0, true);
+  c.range("accel_exponent", d.accel_exponent(), 0.0, 20.0, true);
+  c.range("beta", d.beta(), 1.0, 10.0);
+  c.range("change_threshold_mps2", d.change_threshold_mps2(), 0.0, 5.0);
+  c.range("right_bias_mps2", d.right_bias_mps2(), -5.0, 5.0);
+  c.range("safe_decel_mps2", d.safe_decel_mps2(), 0.0, 15.0, true);
+}
+
+void check_run(const Cursor& c, const Scenario& s) {
+  if (!c.has("name") || s.name().empty()) c.fail("name", "is required");
+  c.range("step_s", s.step_s(), 0.0, kMaxStep_s, true);
+  c.range("duration_s", s.duration_s(), 0.0, 1e7, true);
+}
+
+void check_road(const Cursor& top, const Scenario& s) {
+  if (!top.require("road")) return;
+  const Road& r = s.road();
+  const Cursor c = top.child(r, "road");
+  if (c.require("length_m")) c.range("length_m", r.length_m(), 0.0, 1e7, true);
+  c.range("lanes_forward", r.lanes_forward(), 1, kMaxLanes);
+  c.range("lanes_backward", r.lanes_backward(), 0, kMaxLanes);
+  if (r.kind() == Road::RURAL && (r.lanes_forward() != 1 || r.lanes_backward() != 1)) {
+    c.fail("kind", "a RURAL road has one lane in each direction (lanes_forward = lanes_backward = 1)");
+  }
+  c.range("lane_width_m", r.lane_width_m(), kMinLaneWidth_m, kMaxLaneWidth_m);
+  c.range("median_width_m", r.median_width_m(), 0.0, 100.0);
+  if (c.require("speed_limit_kph")) c.range("speed_limit_kph", r.speed_limit_kph(), 0.0, kMaxSpeedLimit_kph, true);
+  for (int i = 0; i < r.segment_size(); ++i) {
+    const Cursor sc = c.child(r.segment(i), "segment", i);
+    if (sc.require("length_m")) sc.range("length_m", r.segment(i).length_m(), 0.0, 1e7, true);
+    sc.range("curvature_per_m", r.segment(i).curvature_per_m(), -kMaxCurvature_per_m, kMaxCurvature_per_m);
+  }
+  for (int i = 0; i < r.speed_zone_size(); ++i) {
+    const SpeedZone& z = r.speed_zone(i);
+    const Cursor zc = c.child(z, "speed_zone", i);
+    const bool ok = zc.require("start_m") & zc.require("end_m") & zc.require("limit_kph");
+    if (!ok) continue;
+    zc.range("start_m", z.start_m(), 0.0, r.length_m());
+    zc.range("end_m", z.end_m(), 0.0, r.length_m());
+    if (z.end_m() <= z.start_m()) zc.fail("end_m", "must be greater than start_m");
+    zc.range("limit_kph", z.limit_kph(), 0.0, kMaxSpeedLimit_kph, true);
+  }
+}
+
+void check_window(const Cursor& top, const Scenario& s) {
+  const Window& w = s.window();
+  const Cursor c = top.child(w, "window");
+  c.range("inner_ahead_m", w.inner_ahead_m(), 10.0, 20000.0);
+  c.range("inner_behind_m", w.inner_behind_m(), 10.0, 20000.0);
+  c.range("outer_ahead_m", w.outer_ahead_m(), 10.0, 20000.0);
+  c.range("outer_behind_m", w.outer_behind_m(), 10.0, 20000.0);
+  const double hyst_max = std::min(w.outer_ahead_m(), w.outer_behind_m()) / 2.0;
+  c.range("handoff_hysteresis_m", w.handoff_hysteresis_m(), 0.0, hyst_max);
+}
+
+std::set<std::string> check_vehicle_types(const Cursor& c, const Scenario& s) {
+  std::set<std::string> names;
+  if (s.vehicle_type_size() == 0) c.fail("vehicle_type", "at least one vehicle type is required");
+  for (int i = 0; i < s.vehicle_type_size(); ++i) {
+    const VehicleType& t = s.vehicle_type(i);
+    const Cursor tc = c.child(t, "vehicle_type", i);
+    if (t.name().empty()) {
+      tc.fail("name", "is required");
+    } else if (!names.insert(t.name()).second) {
+      tc.fail("name", "\"" + t.name() + "\" is defined twice");
+    }
+    tc.range("length_m", t.length_m(), 0.0, kMaxVehicleLength_m, true);
+    tc.range("width_m", t.width_m(), 0.0, kMaxVehicleWidth_m, true);
+    tc.range("max_decel_mps2", t.max_decel_mps2(), 1.0, 15.0);
+    if (tc.require("driver")) check_driver(tc.child(t.driver(), "driver"), t.driver());
+  }
+  if (s.vehicle_type_size() > 255) c.fail("vehicle_type", "at most 255 vehicle types");
+  return names;
+}
+
+void check_flow(const Cursor& c, const Flow& f, const std::set<std::string>& types, int lanes) {
+  if (!c.require("flow_veh_per_h")) return;
+  c.range("flow_veh_per_h", f.flow_veh_per_h(), 0.0, kMaxFlow_veh_per_h);
+  if (f.flow_veh_per_h() > 0.0 && lanes == 0) c.fail("flow_veh_per_h", "there are no lanes in this direction");
+  double total = 0.0;
+  for (int i = 0; i < f.mix_size(); ++i) {
+    const Share& sh = f.mix(i);
+    const Cursor mc = c.child(sh, "mix", i);
+    if (types.count(sh.type()) == 0) mc.fail("type", "unknown vehicle type \"" + sh.type() + "\"");
+    mc.range("share", sh.share(), 0.0, 1e9);
+    total += sh.share();
+  }
+  if (f.flow_veh_per_h() > 0.0 && !(total > 0.0)) c.fail("mix", "a positive flow needs a mix with a positive share");
+}
+
+void check_demand(const Cursor& top, const Scenario& s, const std::set<std::string>& types) {
+  if (!top.require("demand")) return;
+  const Demand& d = s.demand();
+  const Cursor c = top.child(d, "demand");
+  if (c.require("forward")) check_flow(c.child(d.forward(), "forward"), d.forward(), types, s.road().lanes_forward());
+  if (c.has("backward")) check_flow(c.child(d.backward(), "backward"), d.backward(), types, s.road().lanes_backward());
+}
+
+double ego_top_speed_kph(const Ego& e) {
+  if (e.has_speed_profile()) {
+    double top = 0.0;
+    for (const auto& p : e.speed_profile().point()) top = std::max(top, p.speed_kph());
+    return top;
+  }
+  return e.idm().desired_speed_kph();
+}
+
+void check_ego(const Cursor& top, const Scenario& s) {
+  const Ego& e = s.ego();
+  const Cursor c = top.child(e, "ego");
+  const Road& r = s.road();
+  c.range("start_s_m", e.start_s_m(), 0.0, r.length_m());
+  c.range("lane", e.lane(), 0, std::max(0, r.lanes_forward() - 1));
+  if (e.has_start_speed_kph()) c.range("start_speed_kph", e.start_speed_kph(), 0.0, kMaxSpeedLimit_kph);
+  c.range("length_m", e.length_m(), 0.0, kMaxVehicleLength_m, true);
+  c.range("width_m", e.width_m(), 0.0, kMaxVehicleWidth_m, true);
+  if (e.has_idm()) {
+    const EgoIdmDriver& d = e.idm();
+    const Cursor dc = c.child(d, "idm");
+    dc.range("desired_speed_kph", d.desired_speed_kph(), 0.0, kMaxDesiredSpeed_kph, true);
+    dc.range("time_gap_s", d.time_gap_s(), 0.0, 10.0, true);
+    dc.range("max_accel_mps2", d.max_accel_mps2(), 0.0, 10.0, true);
+    dc.range("comfort_decel_mps2", d.comfort_decel_mps2(), 0.0, 10.0, true);
+    dc.range("min_gap_m", d.min_gap_m(), 0.0, 20.0);
+    dc.range("politeness", d.politeness(), 0.0, 1.0);
+  }
+  if (e.has_speed_profile()) {
+    const SpeedProfile& p = e.speed_profile();
+    const Cursor pc = c.child(p, "speed_profile");
+    if (p.point_size() == 0) pc.fail("point", "a speed profile needs at least one point");
+    for (int i = 0; i < p.point_size(); ++i) {
+      const Cursor qc = pc.child(p.point(i), "point", i);
+      qc.range("speed_kph", p.point(i).speed_kph(), 0.0, kMaxDesiredSpeed_kph);
+      if (i > 0 && p.point(i).s_m() <= p.point(i - 1).s_m()) qc.fail("s_m", "points must have increasing s_m");
+    }
+  }
+  // The ego must not run off the road (with the window ahead) within the scenario's duration.
+  const Window& w = s.window();
+  const double needed = e.start_s_m() + ego_top_speed_kph(e) / 3.6 * s.duration_s() + w.inner_ahead_m() +
+                        w.outer_ahead_m();
+  if (needed > r.length_m()) {
+    top.child(r, "road").fail("length_m", "too short: the ego (start " + fmt(e.start_s_m()) + " m, up to " +
+                                              fmt(ego_top_speed_kph(e)) + " km/h for " + fmt(s.duration_s()) +
+                                              " s) and the window ahead need " + fmt(std::ceil(needed)) + " m");
+  }
+}
+
+void check_plays(const Cursor& c, const Scenario& s) {
+  std::set<std::string> names;
+  for (int i = 0; i < s.play_size(); ++i) {
+    const Play& p = s.play(i);
+    const Cursor pc = c.child(p, "play", i);
+    if (p.name().empty()) {
+      pc.fail("name", "is required");
+    } else if (!names.insert(p.name()).second) {
+      pc.fail("name", "\"" + p.name() + "\" is defined twice");
+    }
+    const bool both = pc.require("trigger1_s_m") & pc.require("trigger2_s_m");
+    if (!both) continue;
+    pc.range("trigger1_s_m", p.trigger1_s_m(), 0.0, s.road().length_m());
+    pc.range("trigger2_s_m", p.trigger2_s_m(), 0.0, s.road().length_m());
+    if (p.trigger2_s_m() <= p.trigger1_s_m()) pc.fail("trigger2_s_m", "must lie beyond trigger1_s_m");
+  }
+}
+
+}  // namespace
+
+void validate(const Scenario& s, const TextFormat::ParseInfoTree& tree, const std::string& path,
+              std::vector<Problem>* problems) {
+  const Cursor top(s, &tree, "", Location{1, 1}, path, problems);
+  check_run(top, s);
+  check_road(top, s);
+  check_window(top, s);
+  const auto types = check_vehicle_types(top, s);
+  check_demand(top, s, types);
+  if (s.has_road()) check_ego(top, s);
+  check_plays(top, s);
+}
+
+}  // namespace entourage::scenario

@@ -1,0 +1,45 @@
+#include "traffic/fleet.hpp"
+
+#include <algorithm>
+
+namespace entourage {
+
+namespace {
+bool by_id(const Vehicle& a, const Vehicle& b) { return a.id < b.id; }
+}  // namespace
+
+void Fleet::adopt(const Handoff& h, Step last_step, double dt_s) {
+  Vehicle v = h.vehicle;
+  if (h.step < last_step) {
+    const double late_s = static_cast<double>(last_step - h.step) * dt_s;
+    v.s_m += sign(v.direction) * v.speed_mps * late_s;
+  }
+  auto it = std::lower_bound(vehicles_.begin(), vehicles_.end(), v, by_id);
+  if (it != vehicles_.end() && it->id == v.id) {
+    *it = std::move(v);
+  } else {
+    vehicles_.insert(it, std::move(v));
+  }
+}
+
+bool Fleet::owns(VehicleId id) const {
+  Vehicle probe;
+  probe.id = id;
+  return std::binary_search(vehicles_.begin(), vehicles_.end(), probe, by_id);
+}
+
+void build_index(LaneIndex& index, const Fleet& fleet, const std::vector<ObservedVehicle>& world,
+                 const EgoObservation* ego) {
+  index.clear();
+  for (const auto& v : fleet.vehicles()) {
+    add_to_index(index, v.direction, v.lane, v.target_lane(), v.id, v.progress_m(), v.speed_mps, v.accel_mps2,
+                 v.length_m);
+  }
+  for (const auto& o : world) {
+    if (!fleet.owns(o.id)) add_to_index(index, o);
+  }
+  if (ego != nullptr) add_to_index(index, *ego);
+  index.sort();
+}
+
+}  // namespace entourage

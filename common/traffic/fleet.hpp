@@ -1,0 +1,43 @@
+#pragma once
+// The vehicles a service owns, always in id order so that every phase iterates deterministically.
+
+#include <vector>
+
+#include "traffic/handoff.hpp"
+#include "traffic/lane_index.hpp"
+#include "traffic/vehicle.hpp"
+#include "traffic/world.hpp"
+
+namespace entourage {
+
+class Fleet {
+ public:
+  // Takes ownership of the handoff's vehicle. A handoff older than `last_step` (a late message in
+  // real time) is brought forward to last_step at constant speed, so nothing is lost.
+  void adopt(const Handoff& h, Step last_step, double dt_s);
+  bool owns(VehicleId id) const;
+  std::size_t size() const { return vehicles_.size(); }
+  std::vector<Vehicle>& vehicles() { return vehicles_; }
+  const std::vector<Vehicle>& vehicles() const { return vehicles_; }
+
+  // Removes the vehicles for which `leaves` is true and returns them in id order.
+  template <typename Pred>
+  std::vector<Vehicle> extract_if(Pred leaves) {
+    std::vector<Vehicle> out;
+    std::vector<Vehicle> keep;
+    keep.reserve(vehicles_.size());
+    for (auto& v : vehicles_) (leaves(v) ? out : keep).push_back(std::move(v));
+    vehicles_ = std::move(keep);
+    return out;
+  }
+
+ private:
+  std::vector<Vehicle> vehicles_;
+};
+
+// Fills `index` with the fleet, every vehicle of the world that the fleet does not own (the
+// world's copy of owned vehicles is the fleet's own state), and the ego.
+void build_index(LaneIndex& index, const Fleet& fleet, const std::vector<ObservedVehicle>& world,
+                 const EgoObservation* ego);
+
+}  // namespace entourage

@@ -1,0 +1,19 @@
+#include "traffic/vehicle.hpp"
+
+#include <algorithm>
+
+namespace entourage {
+
+double LaneChangeState::lateral_fraction() const {
+  if (phase != LaneChangePhase::kMoving || duration_s <= 0.0) return 0.0;
+  const double x = std::clamp(phase_elapsed_s / duration_s, 0.0, 1.0);
+  return x * x * x * (10.0 + x * (-15.0 + 6.0 * x));
+}
+
+Indicator Vehicle::indicator() const {
+  if (!lane_change.active() || lane_change.to_lane == lane_change.from_lane) return Indicator::kOff;
+  // Lane numbers grow to the left for both directions.
+  return lane_change.to_lane > lane_change.from_lane ? Indicator::kLeft : Indicator::kRight;
+}
+
+}  // namespace entourage

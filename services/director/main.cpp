@@ -1,0 +1,65 @@
+// entourage-director: the event director (see README.md).
+#include "entourage_msg/PlayStatusPubSubTypes.h"
+
+#include "dds/region_shell.hpp"
+#include "director/core/director_core.hpp"
+
+#include <spdlog/spdlog.h>
+
+namespace entourage {
+namespace {
+
+msg::PlayStatus to_msg(const director::PlayReport& r, Step k, double time_s) {
+  msg::PlayStatus m;
+  m.play_id(r.play_id);
+  m.step(k);
+  m.time_s(time_s);
+  m.name(r.name.substr(0, 64));
+  m.phase(static_cast<uint8_t>(r.phase));
+  m.ego_s_m(r.ego_s_m);
+  m.trigger1_s_m(r.trigger1_s_m);
+  m.trigger2_s_m(r.trigger2_s_m);
+  m.estimated_start_time_s(r.estimated_start_time_s);
+  m.detail(r.detail.substr(0, 160));
+  return m;
+}
+
+int run(const dds::ServiceContext& ctx) {
+  const ScenarioConfig& sc = ctx.scenario.config;
+  dds::Inbox inbox(ctx.options.peer_ids, ctx.id, dds::SampleLimits::of(sc));
+  dds::Node node(ctx.options.domain, ctx.options.qos_file, to_string(ctx.id));
+  dds::subscribe(node, inbox, ctx.id.role);
+  const auto plays = node.writer<msg::PlayStatusPubSubType>(dds::Topic::kPlayStatus);
+  const auto done = node.writer<msg::StepDonePubSubType>(dds::Topic::kStepDone);
+  dds::StatusReporter status(node, ctx.id);
+  if (!dds::wait_for_discovery(node, ctx.id, ctx.options.peer_ids, status, ctx.options.discovery_timeout_s)) return 1;
+
+  director::DirectorCore core(sc);
+  dds::run_step_loop(
+      ctx, inbox, done, status,
+      [&](Step k) {
+        const EgoObservation ego = dds::from_msg(*inbox.ego(k));
+        if (k > 0) inbox.take(k - 1);
+        dds::TopicCounts written{};
+        for (const auto& r : core.step(ego)) {
+          plays.write(to_msg(r, k, ego.time_s));
+          spdlog::info("play \"{}\": {} {}", r.name, director::to_string(r.phase), r.detail);
+          ++written[static_cast<std::size_t>(dds::Topic::kPlayStatus)];
+        }
+        status.set_counters(inbox.bad_samples(), 0);
+        return written;
+      },
+      [] { return 0U; });
+  return 0;
+}
+
+}  // namespace
+}  // namespace entourage
+
+int main(int argc, char** argv) {
+  return entourage::dds::service_main(
+      argc, argv, entourage::ServiceId{entourage::Role::kDirector, 0},
+      "The event director: follows the scenario's plays and reports their progress as the ego passes their "
+      "trigger points.",
+      nullptr, entourage::run);
+}

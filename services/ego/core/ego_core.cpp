@@ -1,0 +1,105 @@
+#include "ego/core/ego_core.hpp"
+
+#include <algorithm>
+
+#include "traffic/lateral.hpp"
+
+namespace entourage::ego {
+
+namespace {
+// Speed-profile driver: relaxation time towards the target speed.
+constexpr double kProfileRelaxation_s = 2.0;
+// IDM needs a positive desired speed; a profile target of 0 (stop) is followed by the relaxation.
+constexpr double kMinModelDesiredSpeed_mps = 1.0;
+
+DriverParams ego_driver(const EgoConfig& e) {
+  DriverParams d;
+  IdmParams& idm = d.car_following.idm;
+  idm.desired_speed_mps = e.driver.desired_speed_mps;
+  idm.time_gap_s = e.driver.time_gap_s;
+  idm.max_accel_mps2 = e.driver.max_accel_mps2;
+  idm.comfort_decel_mps2 = e.driver.comfort_decel_mps2;
+  idm.min_gap_m = e.driver.min_gap_m;
+  d.lane_change = e.driver.lane_changes && !e.driver.use_speed_profile ? LaneChangeModel::kMobil : LaneChangeModel::kNone;
+  d.mobil.politeness = e.driver.politeness;
+  return d;
+}
+}  // namespace
+
+EgoCore::EgoCore(const ScenarioConfig& scenario)
+    : scenario_(scenario), road_(scenario.road), index_(scenario.road.lanes_forward, scenario.road.lanes_backward) {
+  const EgoConfig& e = scenario.ego;
+  self_.id = kEgoVehicleId;
+  self_.direction = Direction::kForward;
+  self_.lane = e.lane;
+  self_.s_m = e.start_s_m;
+  self_.length_m = e.length_m;
+  self_.width_m = e.width_m;
+  self_.driver = ego_driver(e);
+  self_.lane_change.from_lane = self_.lane_change.to_lane = e.lane;
+  self_.lane_change.duration_s = self_.driver.lane_change_duration_s;
+  if (e.driver.use_speed_profile) {
+    self_.driver.car_following.idm.desired_speed_mps = std::max(kMinModelDesiredSpeed_mps, profile_speed_mps(e.start_s_m));
+  }
+  self_.speed_mps = e.start_speed_mps >= 0.0 ? e.start_speed_mps
+                    : e.driver.use_speed_profile ? profile_speed_mps(e.start_s_m)
+                                                 : e.driver.desired_speed_mps;
+}
+
+double EgoCore::profile_speed_mps(double s_m) const {
+  const auto& pts = scenario_.ego.driver.profile;
+  if (pts.empty()) return scenario_.ego.driver.desired_speed_mps;
+  if (s_m <= pts.front().first) return pts.front().second;
+  if (s_m >= pts.back().first) return pts.back().second;
+  auto it = std::upper_bound(pts.begin(), pts.end(), s_m, [](double s, const auto& p) { return s < p.first; });
+  const auto& [s1, v1] = *it;
+  const auto& [s0, v0] = *(it - 1);
+  return v0 + (v1 - v0) * (s_m - s0) / (s1 - s0);
+}
+
+EgoObservation EgoCore::step(Step step, const std::vector<ObservedVehicle>& world_prev) {
+  index_.clear();
+  for (const auto& o : world_prev) add_to_index(index_, o);
+  add_to_index(index_, self_.direction, self_.lane, self_.target_lane(), self_.id, self_.progress_m(),
+               self_.speed_mps, self_.accel_mps2, self_.length_m);
+  index_.sort();
+
+  const double dt = scenario_.step_s;
+  Decision d;
+  if (scenario_.ego.driver.use_speed_profile) {
+    const double target = profile_speed_mps(self_.s_m);
+    self_.driver.car_following.idm.desired_speed_mps = std::max(kMinModelDesiredSpeed_mps, target);
+    d = decide(self_, index_, rules_, dt);
+    const IdmParams& p = self_.driver.car_following.idm;
+    const double track = std::clamp((target - self_.speed_mps) / kProfileRelaxation_s, -p.comfort_decel_mps2,
+                                    p.max_accel_mps2);
+    d.accel_mps2 = std::min(d.accel_mps2, track);
+  } else {
+    d = decide(self_, index_, rules_, dt);
+  }
+  commit(self_, d, dt);
+  return observe(step);
+}
+
+bool EgoCore::at_road_end() const {
+  return self_.s_m + scenario_.window.inner_ahead_m + scenario_.window.outer_ahead_m >= road_.length_m();
+}
+
+EgoObservation EgoCore::observe(Step step) const {
+  EgoObservation o;
+  o.step = step;
+  o.time_s = static_cast<double>(step) * scenario_.step_s;
+  o.direction = self_.direction;
+  o.lane = self_.lane;
+  o.target_lane = self_.target_lane();
+  o.indicator = static_cast<std::uint8_t>(self_.indicator());
+  o.s_m = self_.s_m;
+  o.d_m = lateral_offset_m(road_, self_);
+  o.speed_mps = self_.speed_mps;
+  o.accel_mps2 = self_.accel_mps2;
+  o.length_m = self_.length_m;
+  o.width_m = self_.width_m;
+  return o;
+}
+
+}  // namespace entourage::ego

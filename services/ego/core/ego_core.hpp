@@ -1,0 +1,45 @@
+#pragma once
+// The ego stand-in: drives the ego along the road in place of a person in a simulator, so that
+// Entourage can run alone. Two drivers (scenario `ego`):
+//   idm            an IDM driver at a desired speed, changing lanes with MOBIL if enabled;
+//   speed_profile  a target speed over road position, followed with a bounded acceleration, with
+//                  IDM's interaction term keeping a safe gap to a leader.
+// It uses the same driving functions as the simulated vehicles (common/traffic/driving.hpp) and
+// sees the world as published at the previous step.
+
+#include <vector>
+
+#include "road/road.hpp"
+#include "scenario/config.hpp"
+#include "traffic/driving.hpp"
+#include "traffic/lane_index.hpp"
+#include "traffic/vehicle.hpp"
+#include "traffic/world.hpp"
+
+namespace entourage::ego {
+
+class EgoCore {
+ public:
+  explicit EgoCore(const ScenarioConfig& scenario);
+
+  // The ego at step 0.
+  EgoObservation initial() const { return observe(0); }
+  // Advances from the previous step to `step`, seeing `world_prev` (the vehicles at step - 1).
+  EgoObservation step(Step step, const std::vector<ObservedVehicle>& world_prev);
+
+  // Past the end of the road (with room for the window ahead): a run must stop here.
+  bool at_road_end() const;
+  const Vehicle& vehicle() const { return self_; }
+
+ private:
+  EgoObservation observe(Step step) const;
+  double profile_speed_mps(double s_m) const;
+
+  ScenarioConfig scenario_;
+  Road road_;
+  DrivingRules rules_;
+  Vehicle self_;
+  LaneIndex index_;
+};
+
+}  // namespace entourage::ego

@@ -1,0 +1,88 @@
+#include "launcher/report.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "core/units.hpp"
+#include "recording/checks.hpp"
+#include "recording/recording.hpp"
+#include "recording/summary.hpp"
+#include "recording/tables.hpp"
+
+namespace entourage::launcher {
+
+namespace {
+
+std::string f1(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f", v);
+  return b;
+}
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const auto i = static_cast<std::size_t>(p * static_cast<double>(v.size() - 1) + 0.5);
+  return v[std::min(i, v.size() - 1)];
+}
+
+std::vector<std::string> type_names(const ScenarioConfig& sc) {
+  std::vector<std::string> names;
+  for (const auto& t : sc.vehicle_types) names.push_back(t.name);
+  return names;
+}
+
+void print_flow(const char* what, const recording::FlowMeasurement& f, std::ostream& out) {
+  if (f.demand_veh_per_h <= 0.0 && f.crossings == 0) return;
+  out << "  flow " << what << ": " << f1(f.measured_veh_per_h) << " veh/h measured in the inner region against a demand of "
+      << f1(f.demand_veh_per_h) << " veh/h (" << (f.relative_error() >= 0 ? "+" : "") << f1(100.0 * f.relative_error())
+      << " %; " << f.crossings << " detector crossings in " << f1(f.observed_s / 3600.0) << " detector-hours)\n";
+}
+
+}  // namespace
+
+bool print_report(const ReportInput& in, std::ostream& out) {
+  std::string error;
+  auto rec = recording::read_recording(in.recording, &error);
+  if (!rec) {
+    out << "entourage: cannot read the recording: " << error << "\n";
+    return false;
+  }
+  const auto tables = recording::tables_from(*rec, type_names(in.scenario));
+  const auto s = recording::summarize(*rec, tables, in.scenario);
+  out << "summary:\n";
+  out << "  simulated " << f1(s.simulated_s) << " s (" << s.steps << " steps)";
+  if (in.wall_s > 0.0) {
+    out << " in " << f1(in.wall_s) << " s of wall time: " << f1(static_cast<double>(s.steps) / in.wall_s)
+        << " steps/s";
+  }
+  out << "\n  vehicles generated " << s.generated << " (" << s.initial_fill << " by the initial fill), removed "
+      << s.removed << ", handed between regions " << s.transfers << " times\n";
+  out << "  mean speed:";
+  for (const char* region : {"outer_rear", "inner", "outer_front"}) {
+    auto it = s.mean_speed_mps.find(region);
+    if (it != s.mean_speed_mps.end()) out << ' ' << region << ' ' << f1(mps_to_kph(it->second)) << " km/h;";
+  }
+  out << " ego " << f1(mps_to_kph(s.ego_mean_speed_mps)) << " km/h over " << f1(s.ego_distance_m / 1000.0) << " km\n";
+  print_flow("forward", s.forward, out);
+  print_flow("backward", s.backward, out);
+  if (in.realtime && !in.latencies_ms.empty()) {
+    out << "  ego state to world state: median " << f1(percentile(in.latencies_ms, 0.5)) << " ms, 99th percentile "
+        << f1(percentile(in.latencies_ms, 0.99)) << " ms, max " << f1(percentile(in.latencies_ms, 1.0)) << " ms over "
+        << in.latencies_ms.size() << " steps\n";
+  }
+  bool all_ok = true;
+  out << "  invariants:\n";
+  for (const auto& c : recording::check_invariants(tables, in.scenario.ego.length_m, in.scenario.ego.width_m)) {
+    out << "    " << (c.passed ? "ok     " : "FAILED ") << c.name << ": " << c.detail << "\n";
+    all_ok = all_ok && c.passed;
+  }
+  if (rec->undecodable > 0) out << "  " << rec->undecodable << " recorded messages could not be decoded\n";
+  out << "  recording: " << in.recording << " (" << rec->vehicles.size() + rec->egos.size() + rec->handoffs.size()
+      << " samples)\n";
+  if (!in.logs_dir.empty()) out << "  logs: " << in.logs_dir << "/\n";
+  return all_ok;
+}
+
+}  // namespace entourage::launcher

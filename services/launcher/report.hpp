@@ -1,0 +1,26 @@
+#pragma once
+// The summary printed at the end of a run (and by `entourage verify`), measured from the
+// recording: what was generated and removed, handoffs, speeds per region, flow against demand,
+// the design's invariants, and in real time the delay from ego state to world state.
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "scenario/config.hpp"
+
+namespace entourage::launcher {
+
+struct ReportInput {
+  std::string recording;
+  std::string logs_dir;  // empty: not a run
+  ScenarioConfig scenario;
+  double wall_s = 0.0;  // 0: not a run
+  bool realtime = false;
+  std::vector<double> latencies_ms;
+};
+
+// Prints the report; false if the recording cannot be read or an invariant is violated.
+bool print_report(const ReportInput& in, std::ostream& out);
+
+}  // namespace entourage::launcher

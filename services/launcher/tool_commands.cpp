@@ -1,0 +1,122 @@
+// entourage check / export / verify / models: the commands that work on files, without DDS.
+#include <iostream>
+
+#include "behaviour/model_registry.hpp"
+#include "cli/args.hpp"
+#include "core/units.hpp"
+#include "launcher/commands.hpp"
+#include "launcher/report.hpp"
+#include "recording/recording.hpp"
+#include "recording/tables.hpp"
+#include "scenario/loader.hpp"
+
+namespace entourage::launcher {
+
+namespace {
+
+// Parses a subcommand's arguments; returns an exit code to stop with, or -1 to go on.
+int parse_or_exit(cli::Args& args, int argc, char** argv, const char* command) {
+  if (!args.parse(argc, argv, 2)) {
+    std::cerr << "entourage " << command << ": " << args.error() << "\n\n" << args.usage();
+    return 2;
+  }
+  if (args.help_requested()) {
+    std::cout << args.usage();
+    return 0;
+  }
+  return -1;
+}
+
+// The scenario a recording was made with (its attached text), for type names and the window.
+std::optional<ScenarioConfig> recorded_scenario(const recording::Recording& r, const std::string& path) {
+  auto sc = scenario::load_text(r.info.scenario_text, path + " (attached " + r.info.scenario_file + ")");
+  if (!sc.ok()) {
+    for (const auto& p : sc.problems) std::cerr << p.to_string() << "\n";
+    return std::nullopt;
+  }
+  return sc.config;
+}
+
+std::vector<std::string> type_names(const ScenarioConfig& sc) {
+  std::vector<std::string> names;
+  for (const auto& t : sc.vehicle_types) names.push_back(t.name);
+  return names;
+}
+
+}  // namespace
+
+int check_command(int argc, char** argv) {
+  std::string path;
+  cli::Args args("entourage check", "Validates a scenario: exits 0, or prints every problem and exits 2.");
+  args.positional("SCENARIO", "scenario file", &path);
+  if (int rc = parse_or_exit(args, argc, argv, "check"); rc >= 0) return rc;
+  const auto sc = scenario::load_file(path);
+  if (!sc.ok()) {
+    for (const auto& p : sc.problems) std::cerr << p.to_string() << "\n";
+    std::cerr << path << ": " << sc.problems.size() << " problem(s)\n";
+    return 2;
+  }
+  const ScenarioConfig& c = sc.config;
+  std::cout << path << ": ok: \"" << c.name << "\", " << c.road.length_m / 1000.0 << " km of "
+            << (c.road.kind == RoadKind::kRural ? "rural road" : "freeway") << " with " << c.road.lanes_forward << "+"
+            << c.road.lanes_backward << " lanes, " << per_second_to_per_hour(c.forward.flow_veh_per_s) << "+"
+            << per_second_to_per_hour(c.backward.flow_veh_per_s) << " veh/h, " << c.vehicle_types.size()
+            << " vehicle types, " << c.plays.size() << " plays, " << c.duration_s << " s\n";
+  return 0;
+}
+
+int export_command(int argc, char** argv) {
+  std::string path;
+  std::string dir;
+  cli::Args args("entourage export", "Writes a recording as CSV: vehicles.csv, ego.csv, handoffs.csv, plays.csv.");
+  args.positional("RECORDING", "an MCAP recording made by entourage run", &path);
+  args.option("csv", "DIR", "directory to write the CSV files to; required", &dir);
+  if (int rc = parse_or_exit(args, argc, argv, "export"); rc >= 0) return rc;
+  if (dir.empty()) {
+    std::cerr << "entourage export: --csv DIR is required\n";
+    return 2;
+  }
+  std::string error;
+  const auto rec = recording::read_recording(path, &error);
+  if (!rec) {
+    std::cerr << "entourage export: " << error << "\n";
+    return 1;
+  }
+  const auto sc = recorded_scenario(*rec, path);
+  if (!sc) return 1;
+  const auto tables = recording::tables_from(*rec, type_names(*sc));
+  if (!recording::write_csv(*rec, tables, dir, &error)) {
+    std::cerr << "entourage export: " << error << "\n";
+    return 1;
+  }
+  std::cout << "wrote " << tables.vehicles.size() << " vehicle rows, " << tables.ego.size() << " ego rows, "
+            << rec->handoffs.size() << " handoffs and " << rec->plays.size() << " play reports to " << dir << "/\n";
+  return 0;
+}
+
+int verify_command(int argc, char** argv) {
+  std::string path;
+  cli::Args args("entourage verify",
+                 "Checks a recording against the design's invariants and prints its figures; exits 1 if an "
+                 "invariant is violated.");
+  args.positional("RECORDING", "an MCAP recording made by entourage run", &path);
+  if (int rc = parse_or_exit(args, argc, argv, "verify"); rc >= 0) return rc;
+  std::string error;
+  const auto rec = recording::read_recording(path, &error);
+  if (!rec) {
+    std::cerr << "entourage verify: " << error << "\n";
+    return 1;
+  }
+  const auto sc = recorded_scenario(*rec, path);
+  if (!sc) return 1;
+  return print_report({path, "", *sc, 0.0, false, {}}, std::cout) ? 0 : 1;
+}
+
+int models_command(int argc, char** argv) {
+  cli::Args args("entourage models", "Lists the behavioural models a scenario can name.");
+  if (int rc = parse_or_exit(args, argc, argv, "models"); rc >= 0) return rc;
+  for (const auto& m : all_models()) std::cout << m.kind << "  " << m.name << "  " << m.description << "\n";
+  return 0;
+}
+
+}  // namespace entourage::launcher

@@ -1,0 +1,152 @@
+#include "meso/core/meso_core.hpp"
+
+#include <algorithm>
+
+#include "meso/core/meso_lanes.hpp"
+#include "meso/core/meso_model.hpp"
+
+namespace entourage::meso {
+
+std::vector<Region> regions_of_instance(std::uint8_t instance) {
+  switch (instance) {
+    case kMesoFront: return {Region::kOuterFront};
+    case kMesoRear: return {Region::kOuterRear};
+    default: return {Region::kOuterRear, Region::kOuterFront};
+  }
+}
+
+MesoCore::MesoCore(const ScenarioConfig& scenario, ServiceId self)
+    : scenario_(scenario),
+      self_(self),
+      regions_(regions_of_instance(self.instance)),
+      inbox_(Role::kMeso, regions_),
+      index_(scenario.road.lanes_forward, scenario.road.lanes_backward) {}
+
+bool MesoCore::serves(Region r) const { return std::find(regions_.begin(), regions_.end(), r) != regions_.end(); }
+
+StepOutput MesoCore::step(const StepInput& in) {
+  adopt(in);
+  perceive(in);
+  move();
+  return hand_off(in);
+}
+
+void MesoCore::adopt(const StepInput& in) {
+  const Step last = in.step == 0 ? 0 : in.step - 1;
+  for (const Handoff& h : inbox_.accept(in.handoffs)) {
+    fleet_.adopt(h, last, scenario_.step_s);
+    ++counters_.adopted;
+  }
+  counters_.duplicate_handoffs = inbox_.duplicates();
+}
+
+void MesoCore::perceive(const StepInput& in) {
+  build_index(index_, fleet_, in.world_prev, in.ego_prev ? &*in.ego_prev : nullptr);
+}
+
+namespace {
+// A vehicle handed over in the middle of a lane change finishes the lateral movement (meso starts
+// no lane change and drops one that has only been signalled); while moving it is in both lanes.
+void continue_lane_change(Vehicle& v, double dt) {
+  LaneChangeState& lc = v.lane_change;
+  lc.since_last_change_s += dt;
+  if (lc.phase == LaneChangePhase::kSignalling) {
+    lc.phase = LaneChangePhase::kNone;
+    lc.to_lane = lc.from_lane = v.lane;
+  } else if (lc.moving()) {
+    lc.phase_elapsed_s += dt;
+    if (lc.phase_elapsed_s >= lc.duration_s) {
+      v.lane = lc.to_lane;
+      lc.from_lane = lc.to_lane;
+      lc.phase = LaneChangePhase::kNone;
+      lc.phase_elapsed_s = 0.0;
+      lc.since_last_change_s = 0.0;
+    }
+  }
+}
+void start_lane_change(Vehicle& v, int lane) {
+  LaneChangeState& lc = v.lane_change;
+  lc.from_lane = v.lane;
+  lc.to_lane = lane;
+  lc.phase = LaneChangePhase::kMoving;
+  lc.phase_elapsed_s = 0.0;
+  lc.duration_s = v.driver.lane_change_duration_s;
+}
+}  // namespace
+
+Ahead MesoCore::ahead_of(const Vehicle& v) const {
+  Ahead a;
+  for (int lane : {v.lane, v.target_lane()}) {
+    const Occupant* leader = index_.leader(v.direction, lane, v.progress_m(), v.id);
+    if (leader == nullptr) continue;
+    const double g = std::max(0.0, gap_between(*leader, v.progress_m(), v.length_m));
+    if (a.gap_m < 0.0 || g < a.gap_m) a = {g, leader->speed_mps};
+  }
+  return a;
+}
+
+const EquilibriumSpeed& MesoCore::equilibrium_of(const Vehicle& v) {
+  auto it = equilibrium_.find(v.id);
+  if (it == equilibrium_.end()) it = equilibrium_.emplace(v.id, EquilibriumSpeed(v.driver.car_following)).first;
+  return it->second;
+}
+
+void MesoCore::move() {
+  const double dt = scenario_.step_s;
+  // Every decision from the same snapshot first, then commit (gaps do not see this step's moves).
+  struct Next {
+    double speed_mps;
+    std::optional<int> lane;
+  };
+  std::vector<Next> next;
+  next.reserve(fleet_.size());
+  for (const Vehicle& v : fleet_.vehicles()) {
+    const Ahead ahead = ahead_of(v);
+    const MesoSpeed ms = next_speed(v, equilibrium_of(v), ahead, dt);
+    if (ms.emergency) ++counters_.emergency_stops;
+    next.push_back({ms.speed_mps, choose_lane(v, index_, ahead.gap_m, lane_rules_)});
+  }
+  auto& vehicles = fleet_.vehicles();
+  for (std::size_t i = 0; i < vehicles.size(); ++i) {
+    Vehicle& v = vehicles[i];
+    v.accel_mps2 = (next[i].speed_mps - v.speed_mps) / dt;
+    v.speed_mps = next[i].speed_mps;
+    v.s_m += sign(v.direction) * v.speed_mps * dt;
+    continue_lane_change(v, dt);
+    if (next[i].lane) start_lane_change(v, *next[i].lane);
+  }
+}
+
+StepOutput MesoCore::hand_off(const StepInput& in) {
+  const WindowBounds w = WindowBounds::around(in.ego.s_m, scenario_.window);
+  const double margin = scenario_.window.handoff_hysteresis_m;
+  StepOutput out;
+  auto retiring = fleet_.extract_if(
+      [&](const Vehicle& v) { return v.s_m < w.rear_edge_m - margin || v.s_m > w.front_edge_m + margin; });
+  for (const Vehicle& v : retiring) {
+    equilibrium_.erase(v.id);
+    Handoff h = make_handoff(v, in.step, self_, Role::kNone, Region::kOutside, HandoffReason::kLeftWindow);
+    inbox_.note_sent(h);
+    out.handoffs.push_back(std::move(h));
+    ++counters_.retired;
+  }
+  for (const Vehicle& v : fleet_.vehicles()) out.states.push_back({v, w.region_of(v.s_m)});
+  auto leaving = fleet_.extract_if([&](const Vehicle& v) {
+    const Region r = w.region_of(v.s_m);
+    return r == Region::kInner || (r != Region::kOutside && !serves(r));
+  });
+  for (const Vehicle& v : leaving) {
+    equilibrium_.erase(v.id);
+    const Region r = w.region_of(v.s_m);
+    const Role to = r == Region::kInner ? Role::kMicro : Role::kMeso;
+    Handoff h = make_handoff(v, in.step, self_, to, r, HandoffReason::kBorder);
+    inbox_.note_sent(h);
+    out.handoffs.push_back(std::move(h));
+    ++(to == Role::kMicro ? counters_.to_micro : counters_.to_other_meso);
+  }
+  std::sort(out.handoffs.begin(), out.handoffs.end(),
+            [](const Handoff& a, const Handoff& b) { return a.vehicle.id < b.vehicle.id; });
+  return out;
+}
+
+}  // namespace entourage::meso

@@ -1,0 +1,49 @@
+#include "meso/core/meso_lanes.hpp"
+
+namespace entourage::meso {
+
+namespace {
+
+double safe_gap_m(const IdmParams& p, double speed_mps) { return p.min_gap_m + speed_mps * p.time_gap_s; }
+
+// Room for `v` in `lane`: the gap ahead is at least `ahead_factor` safe gaps and the follower
+// there keeps its own safe gap. Returns the leader there (or nullptr) through `leader_out`.
+bool has_room(const Vehicle& v, const LaneIndex& index, int lane, double ahead_factor, const Occupant** leader_out) {
+  const IdmParams& p = v.driver.car_following.idm;
+  const Occupant* leader = index.leader(v.direction, lane, v.progress_m(), v.id);
+  const Occupant* follower = index.follower(v.direction, lane, v.progress_m(), v.id);
+  *leader_out = leader;
+  if (leader != nullptr && gap_between(*leader, v.progress_m(), v.length_m) < ahead_factor * safe_gap_m(p, v.speed_mps)) {
+    return false;
+  }
+  if (follower != nullptr) {
+    const Occupant self{v.id, v.progress_m(), v.speed_mps, 0.0, v.length_m};
+    if (gap_between(self, follower->progress_m, follower->length_m) < safe_gap_m(p, follower->speed_mps)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<int> choose_lane(const Vehicle& v, const LaneIndex& index, double gap_ahead_m, const LaneRules& rules) {
+  if (v.lane_change.active() || v.lane_change.since_last_change_s < rules.min_interval_s) return std::nullopt;
+  if (v.driver.lane_change == LaneChangeModel::kNone) return std::nullopt;
+  const IdmParams& p = v.driver.car_following.idm;
+  const int lanes = index.lanes(v.direction);
+  const double v_gap = gap_ahead_m < 0.0 ? p.desired_speed_mps : (gap_ahead_m - p.min_gap_m) / p.time_gap_s;
+  const bool blocked = v_gap < p.desired_speed_mps - rules.blocked_speed_loss_mps;
+  const Occupant* leader_now = index.leader(v.direction, v.lane, v.progress_m(), v.id);
+  const Occupant* leader_there = nullptr;
+  if (blocked && !v.driver.keep_right && v.lane + 1 < lanes &&
+      has_room(v, index, v.lane + 1, 1.0, &leader_there) &&
+      (leader_there == nullptr || leader_now == nullptr || leader_there->speed_mps > leader_now->speed_mps)) {
+    return v.lane + 1;
+  }
+  if (v.lane > 0 && has_room(v, index, v.lane - 1, rules.keep_right_gap_factor, &leader_there) &&
+      (leader_there == nullptr || leader_there->speed_mps >= p.desired_speed_mps - rules.blocked_speed_loss_mps)) {
+    return v.lane - 1;
+  }
+  return std::nullopt;
+}
+
+}  // namespace entourage::meso

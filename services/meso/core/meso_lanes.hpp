@@ -1,0 +1,32 @@
+#pragma once
+// Lane choice in the outer regions: a cheap rule instead of MOBIL, so that a fast vehicle is not
+// held for minutes behind a slightly slower one that, in real traffic, would have moved right
+// or been passed. Only a blocked vehicle looks at the next lane:
+//
+//   pass     its gap-limited speed is below its desired speed by more than kBlockedSpeedLoss,
+//            the lane to the left has room ahead (gap >= s0 + v T) and behind (the follower's
+//            gap >= s0 + v_f T), and its leader there is faster than the present one
+//   keep right  the lane to the right has room ahead for twice the safe gap, a leader there that
+//            would not hold it up, and room behind
+//
+// A change then takes the driver's lane-change duration with the same lateral profile as in the
+// inner region (the vehicle is in both lanes meanwhile), so a vehicle handed to micro mid-change
+// continues it seamlessly.
+
+#include <optional>
+
+#include "traffic/lane_index.hpp"
+#include "traffic/vehicle.hpp"
+
+namespace entourage::meso {
+
+struct LaneRules {
+  double blocked_speed_loss_mps = 2.0;  // how much slower than desired counts as blocked
+  double min_interval_s = 5.0;          // between the end of one change and the next
+  double keep_right_gap_factor = 2.0;   // room wanted ahead in the right lane, in safe gaps
+};
+
+// The lane `v` should start changing to now, if any.
+std::optional<int> choose_lane(const Vehicle& v, const LaneIndex& index, double gap_ahead_m, const LaneRules& rules);
+
+}  // namespace entourage::meso

@@ -1,0 +1,69 @@
+#include "micro/core/micro_core.hpp"
+
+namespace entourage::micro {
+
+MicroCore::MicroCore(const ScenarioConfig& scenario, ServiceId self)
+    : scenario_(scenario),
+      self_(self),
+      road_(scenario.road),
+      inbox_(Role::kMicro, {Region::kInner}),
+      index_(scenario.road.lanes_forward, scenario.road.lanes_backward) {}
+
+StepOutput MicroCore::step(const StepInput& in) {
+  adopt(in);
+  perceive(in);
+  const std::vector<Decision> decisions = decide();
+  move(decisions);
+  return hand_off(in);
+}
+
+void MicroCore::adopt(const StepInput& in) {
+  const Step last = in.step == 0 ? 0 : in.step - 1;
+  for (const Handoff& h : inbox_.accept(in.handoffs)) {
+    fleet_.adopt(h, last, scenario_.step_s);
+    ++counters_.adopted;
+  }
+  counters_.duplicate_handoffs = inbox_.duplicates();
+}
+
+void MicroCore::perceive(const StepInput& in) {
+  build_index(index_, fleet_, in.world_prev, in.ego_prev ? &*in.ego_prev : nullptr);
+}
+
+std::vector<Decision> MicroCore::decide() const {
+  std::vector<Decision> decisions;
+  decisions.reserve(fleet_.size());
+  for (const Vehicle& v : fleet_.vehicles()) decisions.push_back(entourage::decide(v, index_, rules_, scenario_.step_s));
+  return decisions;
+}
+
+void MicroCore::move(const std::vector<Decision>& decisions) {
+  auto& vehicles = fleet_.vehicles();
+  for (std::size_t i = 0; i < vehicles.size(); ++i) {
+    const Decision& d = decisions[i];
+    if (d.emergency) ++counters_.emergency_decisions;
+    if (!vehicles[i].lane_change.active() && d.lane_change.active()) ++counters_.lane_changes_started;
+    commit(vehicles[i], d, scenario_.step_s);
+  }
+}
+
+StepOutput MicroCore::hand_off(const StepInput& in) {
+  const WindowBounds w = WindowBounds::around(in.ego.s_m, scenario_.window);
+  const double margin = scenario_.window.handoff_hysteresis_m;
+  StepOutput out;
+  out.states.reserve(fleet_.size());
+  for (const Vehicle& v : fleet_.vehicles()) out.states.push_back({v, w.region_of(v.s_m)});
+
+  auto leaving = fleet_.extract_if(
+      [&](const Vehicle& v) { return v.s_m < w.inner_rear_m - margin || v.s_m > w.inner_front_m + margin; });
+  for (const Vehicle& v : leaving) {
+    const Region to = v.s_m < w.inner_rear_m ? Region::kOuterRear : Region::kOuterFront;
+    Handoff h = make_handoff(v, in.step, self_, Role::kMeso, to, HandoffReason::kBorder);
+    inbox_.note_sent(h);
+    out.handoffs.push_back(std::move(h));
+    ++counters_.handed_out;
+  }
+  return out;
+}
+
+}  // namespace entourage::micro

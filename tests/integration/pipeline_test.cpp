@@ -1,0 +1,89 @@
+// The whole pipeline: every service a real process over DDS, driven by `entourage run` in
+// lockstep, checked from the exported recording; identical seeds give identical recordings.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "process_util.hpp"
+#include "recording/checks.hpp"
+#include "recording/tables.hpp"
+
+namespace entourage::testing {
+namespace {
+
+constexpr int kDomainLockstep = 110;
+constexpr int kDomainSplit = 111;
+constexpr int kDomainRealtime = 113;
+
+std::string run_scenario(const std::string& dir, const std::string& name, int domain, const std::string& extra) {
+  return bin("entourage") + " run " + source("scenarios/freeway.pbtxt") + " --quiet --domain " +
+         std::to_string(domain) + " --record " + dir + "/" + name + ".mcap " + extra;
+}
+
+void expect_invariants(const std::string& csv_dir) {
+  std::string error;
+  const auto t = recording::read_csv(csv_dir, &error);
+  ASSERT_TRUE(t) << error;
+  EXPECT_GT(t->vehicles.size(), 10000U);
+  for (const auto& c : recording::check_invariants(*t, 4.6, 1.8)) {
+    EXPECT_TRUE(c.passed) << c.name << ": " << c.detail;
+  }
+}
+
+TEST(Pipeline, LockstepRunHoldsTheInvariantsAndIsReproducible) {
+  const std::string dir = fresh_dir("lockstep");
+  for (const char* name : {"a", "b"}) {
+    const CommandResult r = run_command(run_scenario(dir, name, kDomainLockstep, "--lockstep --seed 7 --duration 60"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("simulated 60.0 s (600 steps)"), std::string::npos) << r.output;
+    const CommandResult e =
+        run_command(bin("entourage") + " export " + dir + "/" + name + ".mcap --csv " + dir + "/" + name);
+    ASSERT_EQ(e.exit_code, 0) << e.output;
+  }
+  EXPECT_TRUE(no_process_uses_domain(kDomainLockstep));
+  expect_invariants(dir + "/a");
+  const std::string va = file_bytes(dir + "/a/vehicles.csv");
+  EXPECT_GT(va.size(), 1000000U);
+  EXPECT_EQ(va, file_bytes(dir + "/b/vehicles.csv")) << "same seed, different vehicles";
+  EXPECT_EQ(file_bytes(dir + "/a/ego.csv"), file_bytes(dir + "/b/ego.csv"));
+  EXPECT_EQ(file_bytes(dir + "/a/handoffs.csv"), file_bytes(dir + "/b/handoffs.csv"));
+  EXPECT_EQ(file_bytes(dir + "/a.mcap"), file_bytes(dir + "/b.mcap")) << "recordings differ byte for byte";
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Pipeline, TwoMesoProcessesServeTheOuterRegions) {
+  const std::string dir = fresh_dir("split");
+  const CommandResult r = run_command(run_scenario(dir, "s", kDomainSplit, "--meso split --seed 3 --duration 30"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("meso-front, meso-rear"), std::string::npos) << r.output;
+  ASSERT_EQ(run_command(bin("entourage") + " export " + dir + "/s.mcap --csv " + dir + "/s").exit_code, 0);
+  std::string error;
+  const auto t = recording::read_csv(dir + "/s", &error);
+  ASSERT_TRUE(t) << error;
+  bool front = false;
+  bool rear = false;
+  for (const auto& v : t->vehicles) {
+    front = front || v.owner == "meso-front";
+    rear = rear || v.owner == "meso-rear";
+    EXPECT_NE(v.owner, "meso");
+  }
+  EXPECT_TRUE(front && rear);
+  for (const auto& c : recording::check_invariants(*t, 4.6, 1.8)) EXPECT_TRUE(c.passed) << c.name << ": " << c.detail;
+  EXPECT_TRUE(no_process_uses_domain(kDomainSplit));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Pipeline, RealtimeRunIsPacedAndReportsItsLatency) {
+  const std::string dir = fresh_dir("realtime");
+  const auto t0 = std::chrono::steady_clock::now();
+  const CommandResult r = run_command(run_scenario(dir, "rt", kDomainRealtime, "--realtime --duration 5"));
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_GE(wall, 5.0) << "five simulated seconds took less than five seconds of wall time";
+  EXPECT_NE(r.output.find("ego state to world state: median"), std::string::npos) << r.output;
+  EXPECT_TRUE(no_process_uses_domain(kDomainRealtime));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace entourage::testing

@@ -1,0 +1,210 @@
+// The micro and meso cores: car following without collisions, handoffs at the borders, retirement
+// beyond the window's edges, meso speeds consistent with the micro model's equilibrium.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core_test_util.hpp"
+#include "meso/core/equilibrium.hpp"
+#include "meso/core/meso_core.hpp"
+#include "micro/core/micro_core.hpp"
+#include "road/window.hpp"
+#include "traffic/driver_draw.hpp"
+
+namespace entourage {
+namespace {
+
+using entourage::testing::ego_at;
+using entourage::testing::minimal_scenario;
+
+constexpr ServiceId kGen{Role::kGenerator, 0};
+constexpr ServiceId kMicroId{Role::kMicro, 0};
+constexpr ServiceId kMesoId{Role::kMeso, 0};
+
+Vehicle car(const ScenarioConfig& sc, VehicleId id, int lane, double s, double v, double v0) {
+  Random rng(id);
+  DriverParams d = draw_driver(sc.vehicle_types[0], v0, sc.road.speed_limit_mps, id, rng);
+  return make_vehicle(id, 0, sc.vehicle_types[0], Direction::kForward, lane, s, v, d);
+}
+
+Handoff birth(const Vehicle& v, Role to, Region r) { return make_handoff(v, 0, kGen, to, r, HandoffReason::kBirth); }
+
+// Runs a core with a standing world around it (the ego at a fixed place) and returns its output.
+template <class Core>
+StepOutput run_step(Core& core, Step k, const EgoObservation& ego, std::vector<Handoff> handoffs,
+                    const std::vector<ObservedVehicle>& world) {
+  StepInput in;
+  in.step = k;
+  in.ego = ego;
+  in.ego_prev = ego;
+  in.world_prev = world;
+  in.handoffs = std::move(handoffs);
+  return core.step(in);
+}
+
+std::vector<ObservedVehicle> as_world(const StepOutput& out, ServiceId owner) {
+  std::vector<ObservedVehicle> w;
+  for (const auto& r : out.states) {
+    ObservedVehicle o;
+    o.id = r.vehicle.id;
+    o.owner = owner;
+    o.direction = r.vehicle.direction;
+    o.lane = r.vehicle.lane;
+    o.target_lane = r.vehicle.target_lane();
+    o.s_m = r.vehicle.s_m;
+    o.speed_mps = r.vehicle.speed_mps;
+    o.accel_mps2 = r.vehicle.accel_mps2;
+    o.length_m = r.vehicle.length_m;
+    w.push_back(o);
+  }
+  return w;
+}
+
+TEST(MicroCore, AQueueBehindAStoppedCarStopsWithoutCollision) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.road.lanes_forward = 1;
+  sc.window.inner_ahead_m = 5000.0;
+  micro::MicroCore core(sc);
+  std::vector<Handoff> in;
+  Vehicle stopped = car(sc, 1, 0, 2000.0, 0.0, 30.0);
+  stopped.driver.car_following.idm.desired_speed_mps = 0.01;  // will not move
+  in.push_back(birth(stopped, Role::kMicro, Region::kInner));
+  for (VehicleId id = 2; id <= 6; ++id) in.push_back(birth(car(sc, id, 0, 2000.0 - 60.0 * id, 30.0, 33.0), Role::kMicro, Region::kInner));
+  const EgoObservation ego = ego_at(0, 1500.0, 0.0);
+  StepOutput out = run_step(core, 1, ego, in, {});
+  for (Step k = 2; k < 600; ++k) out = run_step(core, k, ego, {}, {});
+  ASSERT_EQ(core.fleet().size(), 6U);
+  const auto& v = core.fleet().vehicles();
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    const double gap = v[i - 1].s_m - v[i].s_m - 0.5 * (v[i - 1].length_m + v[i].length_m);
+    EXPECT_GT(gap, 1.0) << "between " << v[i].id << " and " << v[i - 1].id;
+    EXPECT_LT(v[i].speed_mps, 0.1);
+  }
+}
+
+TEST(MicroCore, TheEgoIsALeaderLikeAnyOther) {
+  ScenarioConfig sc = minimal_scenario();
+  micro::MicroCore core(sc);
+  // a car 100 m behind a standing ego in its lane: it brakes, changes lane and passes beside the
+  // ego, never through it
+  const EgoObservation ego = ego_at(0, 3000.0, 0.0);
+  run_step(core, 1, ego, {birth(car(sc, 1, 0, 2900.0, 25.0, 30.0), Role::kMicro, Region::kInner)}, {});
+  bool braked = false;
+  bool passed = false;
+  for (Step k = 2; k < 300; ++k) {
+    run_step(core, k, ego, {}, {});
+    if (core.fleet().size() == 0) break;
+    const Vehicle& v = core.fleet().vehicles().front();
+    const bool in_ego_lane = v.lane == 0 || v.target_lane() == 0;
+    EXPECT_FALSE(in_ego_lane && std::abs(v.s_m - 3000.0) < 0.5 * (4.5 + 4.6)) << "through the ego at step " << k;
+    braked = braked || v.accel_mps2 < -1.0;
+    passed = passed || v.s_m > 3010.0;
+  }
+  EXPECT_TRUE(braked);
+  EXPECT_TRUE(passed);
+}
+
+TEST(MicroCore, HandsVehiclesToMesoBeyondTheBorderPlusHysteresis) {
+  ScenarioConfig sc = minimal_scenario();
+  micro::MicroCore core(sc);
+  const EgoObservation ego = ego_at(0, 3000.0, 0.0);
+  const WindowBounds w = WindowBounds::around(3000.0, sc.window);
+  // 1 m before the front border, driving away at 30 m/s
+  StepOutput out = run_step(core, 1, ego, {birth(car(sc, 1, 0, w.inner_front_m - 1.0, 30.0, 30.0), Role::kMicro, Region::kInner)}, {});
+  EXPECT_TRUE(out.handoffs.empty());
+  Step k = 2;
+  while (out.handoffs.empty() && k < 100) out = run_step(core, k++, ego, {}, {});
+  ASSERT_EQ(out.handoffs.size(), 1U);
+  const Handoff& h = out.handoffs[0];
+  EXPECT_EQ(h.to_role, Role::kMeso);
+  EXPECT_EQ(h.to_region, Region::kOuterFront);
+  EXPECT_GT(h.vehicle.s_m, w.inner_front_m + sc.window.handoff_hysteresis_m);
+  EXPECT_EQ(h.vehicle.handoff_sequence, 2U);
+  // published one last time by micro in the step it leaves, then gone
+  ASSERT_EQ(out.states.size(), 1U);
+  EXPECT_EQ(out.states[0].region, Region::kOuterFront);
+  EXPECT_EQ(core.fleet().size(), 0U);
+}
+
+TEST(MesoCore, VehiclesEnteringTheInnerRegionGoToMicro) {
+  ScenarioConfig sc = minimal_scenario();
+  meso::MesoCore core(sc, kMesoId);
+  const EgoObservation ego = ego_at(0, 3000.0, 0.0);
+  const WindowBounds w = WindowBounds::around(3000.0, sc.window);
+  StepOutput out = run_step(core, 1, ego, {birth(car(sc, 1, 0, w.inner_rear_m - 5.0, 30.0, 30.0), Role::kMeso, Region::kOuterRear)}, {});
+  EXPECT_TRUE(out.handoffs.empty());
+  out = run_step(core, 2, ego, {}, {});
+  ASSERT_EQ(out.handoffs.size(), 1U);
+  EXPECT_EQ(out.handoffs[0].to_role, Role::kMicro);
+  EXPECT_EQ(out.handoffs[0].to_region, Region::kInner);
+  EXPECT_EQ(out.states.size(), 1U);  // still published by meso in that step
+}
+
+TEST(MesoCore, VehiclesBeyondTheEdgeRetireAndAreNotPublished) {
+  ScenarioConfig sc = minimal_scenario();
+  meso::MesoCore core(sc, kMesoId);
+  const EgoObservation ego = ego_at(0, 3000.0, 0.0);
+  const WindowBounds w = WindowBounds::around(3000.0, sc.window);
+  StepOutput out = run_step(core, 1, ego, {birth(car(sc, 1, 0, w.front_edge_m + sc.window.handoff_hysteresis_m - 5.0, 30.0, 30.0), Role::kMeso, Region::kOuterFront)}, {});
+  EXPECT_EQ(out.states.size(), 1U);
+  out = run_step(core, 2, ego, {}, {});
+  ASSERT_EQ(out.handoffs.size(), 1U);
+  EXPECT_EQ(out.handoffs[0].to_role, Role::kNone);
+  EXPECT_EQ(out.handoffs[0].reason, HandoffReason::kLeftWindow);
+  EXPECT_TRUE(out.states.empty());
+}
+
+TEST(MesoCore, AFrontOnlyInstanceHandsRearVehiclesOn) {
+  ScenarioConfig sc = minimal_scenario();
+  meso::MesoCore core(sc, ServiceId{Role::kMeso, kMesoFront});
+  // the ego jumped: a vehicle this instance owns now lies in the rear outer region
+  const EgoObservation ego = ego_at(0, 3000.0, 0.0);
+  const WindowBounds w = WindowBounds::around(3000.0, sc.window);
+  Handoff h = birth(car(sc, 1, 0, w.rear_edge_m + 50.0, 0.0, 30.0), Role::kMeso, Region::kOuterFront);
+  const StepOutput out = run_step(core, 1, ego, {h}, {});
+  ASSERT_EQ(out.handoffs.size(), 1U);
+  EXPECT_EQ(out.handoffs[0].to_role, Role::kMeso);
+  EXPECT_EQ(out.handoffs[0].to_region, Region::kOuterRear);
+}
+
+TEST(MesoCore, NoVehicleEverPassesItsLeaderInALane) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.road.lanes_forward = 1;
+  sc.window.outer_ahead_m = 20000.0;
+  meso::MesoCore core(sc, kMesoId);
+  const EgoObservation ego = ego_at(0, 0.0, 0.0);
+  const WindowBounds w = WindowBounds::around(0.0, sc.window);
+  std::vector<Handoff> in;
+  in.push_back(birth(car(sc, 1, 0, w.inner_front_m + 400.0, 15.0, 15.0), Role::kMeso, Region::kOuterFront));
+  for (VehicleId id = 2; id <= 8; ++id) {
+    in.push_back(birth(car(sc, id, 0, w.inner_front_m + 400.0 - 40.0 * id, 35.0, 40.0), Role::kMeso, Region::kOuterFront));
+  }
+  StepOutput out = run_step(core, 1, ego, in, {});
+  for (Step k = 2; k < 1200; ++k) {
+    out = run_step(core, k, ego, {}, as_world(out, kMesoId));
+    auto v = core.fleet().vehicles();
+    std::sort(v.begin(), v.end(), [](const Vehicle& a, const Vehicle& b) { return a.s_m > b.s_m; });
+    for (std::size_t i = 1; i < v.size(); ++i) {
+      ASSERT_EQ(v[i].id, v[i - 1].id + 1) << "order changed at step " << k;
+      ASSERT_GT(v[i - 1].s_m - v[i].s_m, 0.5 * (v[i].length_m + v[i - 1].length_m)) << "overlap at step " << k;
+    }
+  }
+  // the platoon has settled behind the slow leader
+  for (const auto& v : core.fleet().vehicles()) EXPECT_NEAR(v.speed_mps, 15.0, 0.5) << v.id;
+}
+
+TEST(MesoEquilibrium, MatchesTheModelsEquilibriumGap) {
+  CarFollowingParams p;
+  p.idm.desired_speed_mps = 33.0;
+  const meso::EquilibriumSpeed eq(p);
+  for (double v : {0.5, 5.0, 15.0, 25.0, 32.0}) {
+    const double gap = idm_equilibrium_gap_m(p.idm, v);
+    if (gap > eq.max_gap_m()) continue;
+    EXPECT_NEAR(eq.at(gap), v, 0.25) << "v " << v;
+  }
+  EXPECT_DOUBLE_EQ(eq.at(1e9), 33.0);
+  EXPECT_LT(eq.at(0.0), 0.1);
+}
+
+}  // namespace
+}  // namespace entourage
