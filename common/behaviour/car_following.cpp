@@ -1,13 +1,17 @@
 #include "behaviour/car_following.hpp"
 
+#include "behaviour/modified_idm.hpp"
+
 namespace entourage {
 
 double car_following_accel_mps2(const CarFollowingParams& p, double speed_mps, const LeaderView* leader) {
+  if (leader == nullptr) return idm_free_accel_mps2(p.idm, speed_mps);
   switch (p.model) {
+    case CarFollowingModel::kModifiedIdm:
+      return modified_idm_accel_mps2(p.idm, p.beta, speed_mps, leader->gap_m, leader->speed_mps);
     case CarFollowingModel::kIdm:
       break;
   }
-  if (leader == nullptr) return idm_free_accel_mps2(p.idm, speed_mps);
   return idm_accel_mps2(p.idm, speed_mps, leader->gap_m, leader->speed_mps);
 }
 

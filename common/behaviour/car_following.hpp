@@ -9,7 +9,8 @@
 namespace entourage {
 
 enum class CarFollowingModel : std::uint8_t {
-  kIdm = 0,  // Treiber et al. 2000
+  kIdm = 0,          // Treiber et al. 2000
+  kModifiedIdm = 1,  // IDM without interaction beyond beta s* (paper V; modified_idm.hpp)
 };
 
 struct CarFollowingParams {

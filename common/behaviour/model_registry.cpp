@@ -15,6 +15,8 @@ struct LcEntry {
 const std::vector<CfEntry>& cf_entries() {
   static const std::vector<CfEntry> entries{
       {CarFollowingModel::kIdm, {"idm", "car_following", "Intelligent Driver Model (Treiber et al. 2000)"}},
+      {CarFollowingModel::kModifiedIdm,
+       {"modified_idm", "car_following", "IDM without interaction beyond beta s* (paper V of the thesis)"}},
   };
   return entries;
 }

@@ -213,8 +213,8 @@ TopicMask needed_topics(Role role) {
   const TopicMask world = mask_of(Topic::kEgoState) | mask_of(Topic::kVehicleState);
   switch (role) {
     case Role::kEgo: return mask_of(Topic::kVehicleState);
-    case Role::kGenerator:
     case Role::kDirector: return world;
+    case Role::kGenerator:
     case Role::kMicro:
     case Role::kMeso: return world | mask_of(Topic::kHandoff);
     case Role::kRecorder: return world | mask_of(Topic::kHandoff) | mask_of(Topic::kPlayStatus);

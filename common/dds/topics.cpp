@@ -21,7 +21,7 @@ constexpr std::uint32_t kControl = bit(Topic::kStepDone) | bit(Topic::kServiceSt
 std::uint32_t write_mask(Role r) {
   switch (r) {
     case Role::kEgo: return kControl | bit(Topic::kEgoState);
-    case Role::kGenerator: return kControl | bit(Topic::kHandoff);
+    case Role::kGenerator: return kControl | bit(Topic::kHandoff) | bit(Topic::kVehicleState);  // front zone
     case Role::kMicro:
     case Role::kMeso: return kControl | bit(Topic::kVehicleState) | bit(Topic::kHandoff);
     case Role::kDirector: return kControl | bit(Topic::kPlayStatus);
@@ -34,7 +34,7 @@ std::uint32_t read_mask(Role r) {
   const std::uint32_t world = bit(Topic::kEgoState) | bit(Topic::kVehicleState);
   switch (r) {
     case Role::kEgo: return kControl | bit(Topic::kVehicleState);
-    case Role::kGenerator:
+    case Role::kGenerator: return kControl | world | bit(Topic::kHandoff);  // vehicles leaving ahead
     case Role::kDirector: return kControl | world;
     case Role::kMicro:
     case Role::kMeso: return kControl | world | bit(Topic::kHandoff);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "core/units.hpp"
 #include "road/window.hpp"
@@ -20,6 +21,7 @@ FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int dire
   std::unordered_map<std::uint64_t, const EgoRow*> ego_at;
   for (const auto& e : t.ego) ego_at[e.step] = &e;
   std::unordered_map<std::uint32_t, double> last_s;
+  std::unordered_set<std::uint32_t> counted;
   std::unordered_map<std::uint32_t, std::uint64_t> last_step;
   std::size_t i = 0;
   while (i < t.vehicles.size()) {
@@ -31,8 +33,8 @@ FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int dire
     if (now != ego_at.end() && before != ego_at.end()) {
       const WindowBounds w0 = WindowBounds::around(before->second->s_m, sc.window);
       const WindowBounds w1 = WindowBounds::around(now->second->s_m, sc.window);
-      const double lo = std::max(w0.inner_rear_m, w1.inner_rear_m);
-      const double hi = std::min(w0.inner_front_m, w1.inner_front_m);
+      const double lo = std::max(w0.rear_edge_m, w1.rear_edge_m);
+      const double hi = std::min(w0.front_edge_m, w1.front_edge_m);
       const double first = std::ceil(lo / spacing);
       const double last = std::floor(hi / spacing);
       if (last >= first) {
@@ -47,7 +49,10 @@ FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int dire
           // detectors x with a < x <= b (forward) or a <= x < b (backward), within [lo, hi]
           const double from = std::max(first, direction > 0 ? std::floor(a / spacing) + 1.0 : std::ceil(a / spacing));
           const double to = std::min(last, direction > 0 ? std::floor(b / spacing) : std::ceil(b / spacing) - 1.0);
-          if (to >= from) f.crossings += static_cast<std::uint64_t>(to - from + 1.0);
+          if (to >= from) {
+            f.crossings += static_cast<std::uint64_t>(to - from + 1.0);
+            counted.insert(r.id);
+          }
         }
       }
     }
@@ -57,6 +62,7 @@ FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int dire
     }
     i = j;
   }
+  f.vehicles = counted.size();
   if (f.observed_s > 0.0) f.measured_veh_per_h = per_second_to_per_hour(static_cast<double>(f.crossings) / f.observed_s);
   return f;
 }

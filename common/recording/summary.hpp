@@ -1,11 +1,14 @@
 #pragma once
 // What a run produced, measured from its recording: vehicles generated and removed, handoffs,
 // mean speed per region, and the flow of each direction measured by virtual detectors in the
-// inner region against the demand.
+// window against the demand.
 //
 // Flow: detectors stand every detector_spacing_m along the road. Over a step, a detector counts
-// the vehicles that cross it while it lies inside the inner region at both ends of the step, and
-// it observes for dt. Flow = crossings / observation time, summed over all detectors.
+// the vehicles that cross it while it lies inside the window (between its outer edges) at both
+// ends of the step, and it observes for dt. Flow = crossings / observation time, summed over all
+// detectors. In the ego's own direction a window sees few vehicles come and go (they travel at
+// about its speed), so over a few minutes this figure varies by ten or twenty percent from run to
+// run as real traffic does; `vehicles` says how many distinct vehicles it rests on.
 
 #include <cstdint>
 #include <map>
@@ -21,7 +24,8 @@ struct FlowMeasurement {
   double demand_veh_per_h = 0.0;
   double measured_veh_per_h = 0.0;
   std::uint64_t crossings = 0;
-  double observed_s = 0.0;  // detector-seconds
+  double observed_s = 0.0;     // detector-seconds
+  std::uint64_t vehicles = 0;  // distinct vehicles counted
 
   double relative_error() const;  // (measured - demand) / demand; 0 if no demand
 };

@@ -178,4 +178,31 @@ void commit(Vehicle& v, const Decision& d, double dt_s) {
   }
 }
 
+void continue_lane_change(Vehicle& v, double dt_s) {
+  LaneChangeState& lc = v.lane_change;
+  lc.since_last_change_s += dt_s;
+  if (lc.phase == LaneChangePhase::kSignalling) {
+    lc.phase = LaneChangePhase::kNone;
+    lc.to_lane = lc.from_lane = v.lane;
+  } else if (lc.moving()) {
+    lc.phase_elapsed_s += dt_s;
+    if (lc.phase_elapsed_s >= lc.duration_s) {
+      v.lane = lc.to_lane;
+      lc.from_lane = lc.to_lane;
+      lc.phase = LaneChangePhase::kNone;
+      lc.phase_elapsed_s = 0.0;
+      lc.since_last_change_s = 0.0;
+    }
+  }
+}
+
+const Occupant* nearest_leader(const Vehicle& v, const LaneIndex& index) {
+  const Occupant* best = leader_of(v, index, v.lane);
+  if (v.lane_change.moving()) {
+    const Occupant* other = leader_of(v, index, v.lane_change.to_lane);
+    if (other != nullptr && (best == nullptr || other->progress_m < best->progress_m)) best = other;
+  }
+  return best;
+}
+
 }  // namespace entourage

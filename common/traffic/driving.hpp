@@ -46,4 +46,11 @@ Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingRules& ru
 // roll backwards stops instead) and advances its lane change. Commits `d` first.
 void commit(Vehicle& v, const Decision& d, double dt_s);
 
+// For models that decide no lane changes (meso, the generator's front zone): a vehicle handed over
+// in the middle of a lane change finishes the lateral movement, one that only signalled drops it.
+void continue_lane_change(Vehicle& v, double dt_s);
+
+// The nearer of the leaders in the lanes `v` occupies (both while it changes lane).
+const Occupant* nearest_leader(const Vehicle& v, const LaneIndex& index);
+
 }  // namespace entourage

@@ -11,6 +11,9 @@
 //   oncoming entry rate       q E_g[1 + u/v]      with speeds ~ (v + u) f(v)
 // for a window moving at u >= 0. Expectations are evaluated on a fine discretisation of each
 // type's truncated normal; draws pick a bin by weight and a uniform point inside it.
+//
+// This is the free stream: the demand's desired speeds taken as the speeds driven. Interacting
+// traffic is slower and structured in platoons; see observed_stream.hpp.
 
 #include <cstdint>
 #include <functional>
@@ -34,6 +37,7 @@ struct SpeedDraw {
 
 class StreamModel {
  public:
+  // A free stream: every vehicle drives at its desired speed, drawn from the classes.
   StreamModel(double flow_veh_per_s, const std::vector<SpeedClass>& classes);
 
   double flow_veh_per_s() const { return flow_; }
@@ -67,7 +71,7 @@ class StreamModel {
   std::vector<Bin> bins_;
 };
 
-// Builds the stream of one direction of a scenario.
+// Builds the free stream of one direction of a scenario.
 StreamModel make_stream(const ScenarioConfig& sc, Direction dir);
 
 }  // namespace entourage

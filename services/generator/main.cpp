@@ -13,29 +13,33 @@ int run(const dds::ServiceContext& ctx) {
   dds::Inbox inbox(ctx.options.peer_ids, ctx.id, dds::SampleLimits::of(sc));
   dds::Node node(ctx.options.domain, ctx.options.qos_file, to_string(ctx.id));
   dds::subscribe(node, inbox, ctx.id.role);
-  const auto handoffs = node.writer<msg::HandoffPubSubType>(dds::Topic::kHandoff);
+  dds::RegionPublisher publisher(node, ctx.id, road);
   const auto done = node.writer<msg::StepDonePubSubType>(dds::Topic::kStepDone);
   dds::StatusReporter status(node, ctx.id);
+  // Observing the demand's stream takes a second or two: done before reporting ready.
+  generator::GeneratorCore core(sc, Random::derived(ctx.seed, static_cast<std::uint64_t>(Role::kGenerator)).next_u64());
   if (!dds::wait_for_discovery(node, ctx.id, ctx.options.peer_ids, status, ctx.options.discovery_timeout_s)) return 1;
 
-  generator::GeneratorCore core(sc, Random::derived(ctx.seed, static_cast<std::uint64_t>(Role::kGenerator)).next_u64());
   dds::run_step_loop(
       ctx, inbox, done, status,
       [&](Step k) {
-        const StepOutput out = core.step(dds::gather_inputs(k, inbox, {}));
+        const StepOutput out = core.step(dds::gather_inputs(k, inbox, publisher.own()));
         status.set_counters(inbox.bad_samples(), 0);
         status.set_detail("queued at the edges: " + std::to_string(core.queued()));
-        dds::TopicCounts written{};
-        for (const Handoff& h : out.handoffs) {
-          handoffs.write(dds::to_msg(h, static_cast<double>(k) * sc.step_s, road));
-          ++written[static_cast<std::size_t>(dds::Topic::kHandoff)];
-        }
-        return written;
+        return publisher.publish(k, static_cast<double>(k) * sc.step_s, out);
       },
-      [] { return 0U; });
+      [&core] { return static_cast<std::uint32_t>(core.front_zone().size()); });
   const auto& c = core.counters();
-  spdlog::info("generated {} vehicles ({} by {} fills, {} of {} edge arrivals), {} still queued", c.filled + c.placed,
-               c.filled, c.fills, c.placed, c.arrivals, core.queued());
+  spdlog::info(
+      "generated {} vehicles: {} by {} fills ({} left out for lack of room), {} at the edges from {} platoon arrivals "
+      "({} members did not enter, {} platoons dropped, {} still queued)",
+      c.filled + c.placed, c.filled, c.fills, c.fill_skipped, c.placed, c.arrivals, c.not_entered, c.dropped,
+      core.queued());
+  spdlog::info("front zone: {} vehicles joined it, {} left it far ahead", c.ahead, c.left_ahead);
+  spdlog::info("platoons arrived / their vehicles / vehicles placed: from behind {}/{}/{}, from ahead {}/{}/{}, "
+               "oncoming {}/{}/{}",
+               c.arrivals_at[0], c.members_at[0], c.placed_at[0], c.arrivals_at[1], c.members_at[1], c.placed_at[1],
+               c.arrivals_at[2], c.members_at[2], c.placed_at[2]);
   return 0;
 }
 

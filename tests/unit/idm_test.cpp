@@ -5,6 +5,7 @@
 
 #include "behaviour/car_following.hpp"
 #include "behaviour/idm.hpp"
+#include "behaviour/modified_idm.hpp"
 
 namespace entourage {
 namespace {
@@ -77,6 +78,65 @@ TEST(CarFollowing, IdmThroughTheInterfaceMatchesIdm) {
   const LeaderView leader{30.0, 18.0, 0.0};
   EXPECT_DOUBLE_EQ(car_following_accel_mps2(cf, 20.0, &leader), idm_accel_mps2(cf.idm, 20.0, 30.0, 18.0));
   EXPECT_DOUBLE_EQ(car_following_accel_mps2(cf, 20.0, nullptr), idm_free_accel_mps2(cf.idm, 20.0));
+}
+
+}  // namespace
+}  // namespace entourage
+
+namespace entourage {
+namespace {
+
+TEST(ModifiedIdm, MatchesIdmWhenCloserThanTheDesiredGap) {
+  const IdmParams p = params();
+  for (double gap : {3.0, 10.0, 20.0}) {
+    const double s_star = idm_desired_gap_m(p, 20.0, 2.0);
+    ASSERT_LE(gap, s_star);
+    EXPECT_DOUBLE_EQ(modified_idm_accel_mps2(p, 1.35, 20.0, gap, 18.0), idm_accel_mps2(p, 20.0, gap, 18.0));
+  }
+}
+
+TEST(ModifiedIdm, NoInteractionBeyondBetaTimesTheDesiredGap) {
+  const IdmParams p = params();
+  const double s_star = idm_desired_gap_m(p, 25.0, 0.0);
+  EXPECT_DOUBLE_EQ(modified_idm_accel_mps2(p, 1.35, 25.0, 1.35 * s_star, 25.0), idm_free_accel_mps2(p, 25.0));
+  EXPECT_DOUBLE_EQ(modified_idm_accel_mps2(p, 1.35, 25.0, 3.0 * s_star, 25.0), idm_free_accel_mps2(p, 25.0));
+  // IDM still brakes there
+  EXPECT_LT(idm_accel_mps2(p, 25.0, 1.35 * s_star, 25.0), idm_free_accel_mps2(p, 25.0) - 0.3);
+}
+
+TEST(ModifiedIdm, IsContinuousWhereTheWeightChanges) {
+  const IdmParams p = params();
+  const double v = 25.0;
+  const double s_star = idm_desired_gap_m(p, v, 0.0);
+  const double eps = 1e-7;
+  for (double at : {s_star, 1.35 * s_star}) {
+    EXPECT_NEAR(modified_idm_accel_mps2(p, 1.35, v, at - eps, v), modified_idm_accel_mps2(p, 1.35, v, at + eps, v), 1e-5)
+        << "at gap " << at;
+  }
+  // and in between, more room never means more braking
+  double previous = modified_idm_accel_mps2(p, 1.35, v, s_star, v);
+  for (double gap = s_star; gap <= 1.5 * s_star; gap += 0.01) {
+    const double a = modified_idm_accel_mps2(p, 1.35, v, gap, v);
+    EXPECT_GE(a, previous - 1e-12) << "gap " << gap;
+    previous = a;
+  }
+}
+
+TEST(ModifiedIdm, ReachesTheDesiredSpeedWhereIdmCannot) {
+  // equilibrium at a 100 m gap: IDM settles well below v0, the modified model at v0
+  CarFollowingParams idm;
+  idm.idm = params();
+  CarFollowingParams mod = idm;
+  mod.model = CarFollowingModel::kModifiedIdm;
+  const LeaderView far{100.0, 33.3, 0.0};  // a leader 100 m ahead at the desired speed
+  double v_idm = 33.3;
+  double v_mod = 33.3;
+  for (int i = 0; i < 3000; ++i) {
+    v_idm += 0.1 * car_following_accel_mps2(idm, v_idm, &far);
+    v_mod += 0.1 * car_following_accel_mps2(mod, v_mod, &far);
+  }
+  EXPECT_LT(v_idm, 33.3 - 1.0);
+  EXPECT_NEAR(v_mod, 33.3, 0.05);
 }
 
 }  // namespace

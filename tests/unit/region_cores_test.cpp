@@ -140,18 +140,29 @@ TEST(MesoCore, VehiclesEnteringTheInnerRegionGoToMicro) {
   EXPECT_EQ(out.states.size(), 1U);  // still published by meso in that step
 }
 
-TEST(MesoCore, VehiclesBeyondTheEdgeRetireAndAreNotPublished) {
+TEST(MesoCore, VehiclesLeavingAheadGoOnInTheFrontZoneOthersRetire) {
   ScenarioConfig sc = minimal_scenario();
   meso::MesoCore core(sc, kMesoId);
   const EgoObservation ego = ego_at(0, 3000.0, 0.0);
   const WindowBounds w = WindowBounds::around(3000.0, sc.window);
-  StepOutput out = run_step(core, 1, ego, {birth(car(sc, 1, 0, w.front_edge_m + sc.window.handoff_hysteresis_m - 5.0, 30.0, 30.0), Role::kMeso, Region::kOuterFront)}, {});
-  EXPECT_EQ(out.states.size(), 1U);
+  const double margin = sc.window.handoff_hysteresis_m;
+  Vehicle ahead = car(sc, 1, 0, w.front_edge_m + margin - 5.0, 30.0, 30.0);
+  Vehicle oncoming = car(sc, 2, 0, w.rear_edge_m - margin + 5.0, 30.0, 30.0);
+  oncoming.direction = Direction::kBackward;
+  StepOutput out = run_step(core, 1, ego,
+                            {birth(ahead, Role::kMeso, Region::kOuterFront), birth(oncoming, Role::kMeso, Region::kOuterRear)}, {});
+  EXPECT_EQ(out.states.size(), 2U);
   out = run_step(core, 2, ego, {}, {});
-  ASSERT_EQ(out.handoffs.size(), 1U);
-  EXPECT_EQ(out.handoffs[0].to_role, Role::kNone);
-  EXPECT_EQ(out.handoffs[0].reason, HandoffReason::kLeftWindow);
-  EXPECT_TRUE(out.states.empty());
+  ASSERT_EQ(out.handoffs.size(), 2U);
+  // the one ahead in the ego's direction: published one last time, then the generator's
+  EXPECT_EQ(out.handoffs[0].vehicle.id, 1U);
+  EXPECT_EQ(out.handoffs[0].to_role, Role::kGenerator);
+  ASSERT_EQ(out.states.size(), 1U);
+  EXPECT_EQ(out.states[0].vehicle.id, 1U);
+  // the oncoming one behind the window: retired, no longer published
+  EXPECT_EQ(out.handoffs[1].vehicle.id, 2U);
+  EXPECT_EQ(out.handoffs[1].to_role, Role::kNone);
+  EXPECT_EQ(out.handoffs[1].reason, HandoffReason::kLeftWindow);
 }
 
 TEST(MesoCore, AFrontOnlyInstanceHandsRearVehiclesOn) {

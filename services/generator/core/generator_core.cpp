@@ -1,77 +1,65 @@
 #include "generator/core/generator_core.hpp"
 
 #include <algorithm>
-#include <functional>
 #include <cmath>
-#include <limits>
 #include <unordered_set>
 
-#include "behaviour/idm.hpp"
-#include "traffic/driver_draw.hpp"
+#include "traffic/entry.hpp"
 
 namespace entourage::generator {
 
 namespace {
 constexpr ServiceId kSelf{Role::kGenerator, 0};
-// A vehicle not yet placed has no id among the others.
-constexpr VehicleId kNoVehicle = std::numeric_limits<VehicleId>::max();
-// Driver-stream labels: a driver's own stream is derived from the seed and its vehicle id.
+// Seed labels: each driver's own stream (with its vehicle id) and the stream observations.
 constexpr std::uint64_t kDriverStreamLabel = 0x6472697665720000ULL;
-// Places tried for a vehicle of the initial fill that found no room where it was drawn.
-constexpr int kFillAttempts = 50;
+constexpr std::uint64_t kObservationLabel = 0x6f62736572766500ULL;
 // How long the generator remembers a birth the world does not show yet.
 constexpr Step kBirthMemorySteps = 20;
 
-// A new vehicle never starts closer than this share of the time gap behind another, even when
-// the other is pulling away (where IDM's s* shrinks to s0).
-constexpr double kMinTimeGapShare = 0.5;
-
-// The gap a driver of `type` wants behind a leader: IDM's s*(v, v - v_leader) with the type's
-// mean parameters, and at least half the time gap (what an entering vehicle needs, and what it
-// must leave to a follower).
-double wanted_gap_m(const VehicleTypeConfig& type, double speed_mps, double leader_speed_mps) {
-  IdmParams p;
-  p.time_gap_s = type.driver.time_gap_s.mean;
-  p.max_accel_mps2 = type.driver.max_accel_mps2.mean;
-  p.comfort_decel_mps2 = type.driver.comfort_decel_mps2.mean;
-  p.min_gap_m = type.driver.min_gap_m.mean;
-  return std::max(idm_desired_gap_m(p, speed_mps, speed_mps - leader_speed_mps),
-                  p.min_gap_m + kMinTimeGapShare * speed_mps * p.time_gap_s);
-}
-
 double edge_position(Edge e, const WindowBounds& w) { return e == Edge::kRear ? w.rear_edge_m : w.front_edge_m; }
+
+ObservedStream observe(const ScenarioConfig& sc, Direction dir, const GeneratorConfig& config, std::uint64_t seed) {
+  const std::uint64_t label = kObservationLabel + (dir == Direction::kForward ? 0 : 1);
+  return ObservedStream(sc, dir, config.observation, Random::derived(seed, label).next_u64());
+}
 }  // namespace
 
 GeneratorCore::GeneratorCore(const ScenarioConfig& scenario, std::uint64_t seed, GeneratorConfig config)
     : scenario_(scenario),
       config_(config),
       road_(scenario.road),
-      forward_(make_stream(scenario, Direction::kForward)),
-      backward_(make_stream(scenario, Direction::kBackward)),
       rng_(seed),
       seed_(seed),
+      forward_(observe(scenario, Direction::kForward, config, seed)),
+      backward_(observe(scenario, Direction::kBackward, config, seed)),
       index_(scenario.road.lanes_forward, scenario.road.lanes_backward) {
-  streams_.push_back({Direction::kForward, Edge::kRear, 0.0, rng_.exponential(1.0), {}});
-  streams_.push_back({Direction::kForward, Edge::kFront, 0.0, rng_.exponential(1.0), {}});
+  edges_.push_back({Direction::kForward, Edge::kRear, Entrance::kRear, 0.0, rng_.exponential(1.0), {}});
+  edges_.push_back({Direction::kForward, Edge::kFront, Entrance::kFront, 0.0, rng_.exponential(1.0), {}});
   if (scenario.road.lanes_backward > 0) {
-    streams_.push_back({Direction::kBackward, Edge::kFront, 0.0, rng_.exponential(1.0), {}});
+    edges_.push_back({Direction::kBackward, Edge::kFront, Entrance::kOncoming, 0.0, rng_.exponential(1.0), {}});
   }
 }
 
 std::size_t GeneratorCore::queued() const {
   std::size_t n = 0;
-  for (const auto& s : streams_) n += s.queue.size();
+  for (const auto& e : edges_) n += e.queue.size();
   return n;
 }
 
 StepOutput GeneratorCore::step(const StepInput& in) {
   StepOutput out;
+  for (const Handoff& h : inbox_.accept(in.handoffs)) zone_.add(h.vehicle);
   perceive(in);
+  zone_.move(index_, scenario_.step_s);
+  index_world(in);
   if (needs_fill(in)) fill(in, out);
   arrive(in);
   place(in, out);
+  hand_over(in, out);
   last_ego_ = in.ego;
-  for (const Handoff& h : out.handoffs) recent_births_.push_back(h);
+  for (const Handoff& h : out.handoffs) {
+    if (h.from == kSelf && h.to_role != Role::kNone) recent_births_.push_back(h);
+  }
   return out;
 }
 
@@ -91,11 +79,20 @@ void GeneratorCore::perceive(const StepInput& in) {
                                         return visible.count(h.vehicle.id) != 0 || h.step + kBirthMemorySteps < in.step;
                                       }),
                        recent_births_.end());
+  index_world(in);
+}
+
+void GeneratorCore::index_world(const StepInput& in) {
   const double dt = scenario_.step_s;
   index_.clear();
   for (const auto& o : in.world_prev) {
+    if (zone_.owns(o.id)) continue;  // the zone's own state is newer
     add_to_index(index_, o.direction, o.lane, o.target_lane, o.id, o.progress_m() + o.speed_mps * dt, o.speed_mps,
                  o.accel_mps2, o.length_m);
+  }
+  for (const Vehicle& v : zone_.vehicles().vehicles()) {
+    add_to_index(index_, v.direction, v.lane, v.target_lane(), v.id, v.progress_m(), v.speed_mps, v.accel_mps2,
+                 v.length_m);
   }
   for (const auto& h : recent_births_) {
     const Vehicle& v = h.vehicle;
@@ -106,43 +103,43 @@ void GeneratorCore::perceive(const StepInput& in) {
   index_.sort();
 }
 
-std::optional<std::pair<int, double>> GeneratorCore::find_room(Direction dir, double s_m, double speed_mps,
-                                                               std::uint8_t type_index) const {
-  const VehicleTypeConfig& type = scenario_.vehicle_types[type_index];
-  const double p = sign(dir) * s_m;
-  const int lanes = road_.lanes(dir);
-  std::optional<std::pair<int, double>> best;
-  for (int lane = 0; lane < (type.keep_right ? std::min(1, lanes) : lanes); ++lane) {
-    const Occupant* leader = index_.leader(dir, lane, p, kNoVehicle);
-    const Occupant* follower = index_.follower(dir, lane, p, kNoVehicle);
-    double v = speed_mps;
-    if (leader != nullptr) {
-      const double gap = gap_between(*leader, p, type.length_m);
-      if (gap < wanted_gap_m(type, v, leader->speed_mps)) v = std::min(v, leader->speed_mps);
-      if (gap < wanted_gap_m(type, v, leader->speed_mps)) continue;
-    }
-    if (follower != nullptr) {
-      const Occupant self{0, p, v, 0.0, type.length_m};
-      if (gap_between(self, follower->progress_m, follower->length_m) < wanted_gap_m(type, follower->speed_mps, v)) {
-        continue;
-      }
-    }
-    if (!best || v > best->second + 1e-9) best = std::make_pair(lane, v);
+bool GeneratorCore::fits(Direction dir, int lane, double p, const Vehicle& v) const {
+  const VehicleTypeConfig& type = scenario_.vehicle_types[v.type_index];
+  if (const Occupant* leader = index_.leader(dir, lane, p, kNoVehicle)) {
+    if (gap_between(*leader, p, v.length_m) < wanted_gap_m(type, v.speed_mps, leader->speed_mps)) return false;
   }
-  return best;
+  if (const Occupant* follower = index_.follower(dir, lane, p, kNoVehicle)) {
+    const Occupant self{kNoVehicle, p, v.speed_mps, 0.0, v.length_m};
+    if (gap_between(self, follower->progress_m, follower->length_m) < wanted_gap_m(type, follower->speed_mps, v.speed_mps)) {
+      return false;
+    }
+  }
+  return true;
 }
 
-Handoff GeneratorCore::birth(Direction dir, int lane, double s_m, double speed_mps, double desired_speed_mps,
-                             std::uint8_t type_index, const WindowBounds& w, Step step, HandoffReason reason) {
-  const VehicleTypeConfig& type = scenario_.vehicle_types[type_index];
-  const VehicleId id = next_id_++;
-  const std::uint64_t driver_seed = Random::derived(seed_, kDriverStreamLabel ^ id).next_u64();
-  const DriverParams driver = draw_driver(type, desired_speed_mps, scenario_.road.speed_limit_mps, driver_seed, rng_);
-  const Vehicle v = make_vehicle(id, type_index, type, dir, lane, s_m, speed_mps, driver);
-  const Region region = w.region_of(s_m);
-  const Role to = region == Region::kInner ? Role::kMicro : Role::kMeso;
-  add_to_index(index_, dir, lane, lane, id, v.progress_m(), speed_mps, 0.0, v.length_m);
+Vehicle GeneratorCore::make(const Vehicle& model, Direction dir, int lane, double progress_m, double speed_mps) {
+  Vehicle v = model;
+  v.id = next_id_++;
+  v.direction = dir;
+  v.lane = lane;
+  v.s_m = sign(dir) * progress_m;
+  v.speed_mps = speed_mps;
+  v.accel_mps2 = 0.0;
+  v.handoff_sequence = 0;
+  v.lane_change = LaneChangeState{};
+  v.lane_change.from_lane = v.lane_change.to_lane = lane;
+  v.lane_change.duration_s = v.driver.lane_change_duration_s;
+  v.driver.rng_state = Random::derived(seed_, kDriverStreamLabel ^ v.id).next_u64();
+  add_to_index(index_, dir, lane, lane, v.id, progress_m, speed_mps, 0.0, v.length_m);
   index_.sort();
+  return v;
+}
+
+Handoff GeneratorCore::birth(const Vehicle& model, Direction dir, int lane, double progress_m, double speed_mps,
+                             const WindowBounds& w, Step step, HandoffReason reason) {
+  const Vehicle v = make(model, dir, lane, progress_m, speed_mps);
+  const Region region = w.region_of(v.s_m);
+  const Role to = region == Region::kInner ? Role::kMicro : Role::kMeso;
   return make_handoff(v, step, kSelf, to, region, reason);
 }
 
@@ -150,133 +147,137 @@ void GeneratorCore::fill(const StepInput& in, StepOutput& out) {
   ++counters_.fills;
   const WindowBounds w = WindowBounds::around(in.ego.s_m, scenario_.window);
   for (Direction dir : {Direction::kForward, Direction::kBackward}) {
-    const StreamModel& m = model(dir);
-    if (road_.lanes(dir) == 0 || m.density_per_m() <= 0.0) continue;
-    // The window gets the stream's expected number of vehicles, k L (rounded), at positions that
-    // are uniform given that number (a Poisson process conditioned on its count: every run starts
-    // with the demanded density rather than a random one). They are placed from the front of the
-    // window (in the direction of travel) backwards, so that each one's leader is already there;
-    // a position too close to the vehicle ahead in every lane moves back to the nearest room.
-    const double front_p = dir == Direction::kForward ? w.front_edge_m : -w.rear_edge_m;
+    const ObservedStream& stream = this->stream(dir);
+    if (stream.empty()) continue;
+    // A stretch of the observed stream as long as the window, laid from the window's rear end
+    // in the direction of travel; vehicles that would overlap the ego (or, after a jump, vehicles
+    // already there) are left out.
+    // The stretch is consistent in itself; it is checked against what was there before it only.
+    // In the ego's direction it reaches on into the front zone.
     const double back_p = dir == Direction::kForward ? w.rear_edge_m : -w.front_edge_m;
-    const auto count = static_cast<std::size_t>(std::llround(m.density_per_m() * (front_p - back_p)));
-    std::vector<double> points(count);
-    for (double& p : points) p = rng_.uniform(back_p, front_p);
-    std::sort(points.begin(), points.end(), std::greater<>());
-    std::size_t homeless = 0;
-    for (const double p : points) {
-      const SpeedDraw d = m.draw_space_mean(rng_);
-      const auto spot = fill_spot(dir, p, d.speed_mps, d.type_index);
-      if (!spot || spot->progress_m <= back_p) {
-        ++homeless;
-        continue;
+    const double length = w.front_edge_m - w.rear_edge_m + (dir == Direction::kForward ? config_.front_zone_m : 0.0);
+    std::vector<StreamVehicle> accepted;
+    for (const StreamVehicle& sv : stream.stretch(rng_, length, config_.fill_candidates)) {
+      if (fits(dir, sv.vehicle.lane, back_p + sv.offset_m, sv.vehicle)) {
+        accepted.push_back(sv);
+      } else {
+        ++counters_.fill_skipped;
       }
-      out.handoffs.push_back(birth(dir, spot->lane, sign(dir) * spot->progress_m, spot->speed_mps, d.speed_mps,
-                                   d.type_index, w, in.step, HandoffReason::kInitialFill));
-      ++counters_.filled;
     }
-    // A vehicle pushed out at the back by those ahead of it goes to another place with room.
-    for (; homeless > 0; --homeless) {
-      const SpeedDraw d = m.draw_space_mean(rng_);
-      std::optional<Spot> spot;
-      for (int attempt = 0; attempt < kFillAttempts && (!spot || spot->progress_m <= back_p); ++attempt) {
-        spot = fill_spot(dir, rng_.uniform(back_p, front_p), d.speed_mps, d.type_index);
-      }
-      if (!spot || spot->progress_m <= back_p) {
-        ++counters_.fill_dropped;
+    for (const StreamVehicle& sv : accepted) {
+      const double p = back_p + sv.offset_m;
+      if (dir == Direction::kForward && p > w.front_edge_m) {
+        zone_.add(make(sv.vehicle, dir, sv.vehicle.lane, p, sv.vehicle.speed_mps));
+        ++counters_.ahead;
         continue;
       }
-      out.handoffs.push_back(birth(dir, spot->lane, sign(dir) * spot->progress_m, spot->speed_mps, d.speed_mps,
-                                   d.type_index, w, in.step, HandoffReason::kInitialFill));
+      out.handoffs.push_back(
+          birth(sv.vehicle, dir, sv.vehicle.lane, p, sv.vehicle.speed_mps, w, in.step, HandoffReason::kInitialFill));
       ++counters_.filled;
     }
   }
 }
 
-double GeneratorCore::room_behind(Direction dir, int lane, double progress_m, double speed_mps,
-                                  const VehicleTypeConfig& type) const {
-  // Move back until the vehicle ahead (which may change as we move) is far enough.
-  double p = progress_m;
-  for (const Occupant* leader = index_.leader(dir, lane, p, kNoVehicle); leader != nullptr;
-       leader = index_.leader(dir, lane, p, kNoVehicle)) {
-    const double room = leader->progress_m - 0.5 * (leader->length_m + type.length_m) -
-                        wanted_gap_m(type, speed_mps, leader->speed_mps);
-    if (p <= room) break;
-    p = room;
-  }
-  return p;
-}
-
-std::optional<GeneratorCore::Spot> GeneratorCore::fill_spot(Direction dir, double progress_m, double speed_mps,
-                                                          std::uint8_t type_index) const {
-  const VehicleTypeConfig& type = scenario_.vehicle_types[type_index];
-  const int lanes = road_.lanes(dir);
-  std::optional<Spot> best;
-  for (int lane = 0; lane < (type.keep_right ? std::min(1, lanes) : lanes); ++lane) {
-    // At its desired speed, or caught up behind a slower vehicle ahead at that one's speed
-    // (stationary traffic has such pairs), whichever needs the smaller move backwards.
-    Spot spot{lane, room_behind(dir, lane, progress_m, speed_mps, type), speed_mps};
-    if (const Occupant* leader = index_.leader(dir, lane, progress_m, kNoVehicle);
-        leader != nullptr && leader->speed_mps < speed_mps) {
-      const double p = room_behind(dir, lane, progress_m, leader->speed_mps, type);
-      if (p > spot.progress_m + 1e-9) spot = Spot{lane, p, leader->speed_mps};
-    }
-    const Occupant* follower = index_.follower(dir, lane, spot.progress_m, kNoVehicle);
-    if (follower != nullptr) {
-      const Occupant self{0, spot.progress_m, spot.speed_mps, 0.0, type.length_m};
-      if (gap_between(self, follower->progress_m, follower->length_m) <
-          wanted_gap_m(type, follower->speed_mps, spot.speed_mps)) {
-        continue;  // an existing vehicle behind (a refill after a jump) leaves no room here
-      }
-    }
-    if (!best || spot.progress_m > best->progress_m + 1e-9) best = spot;
-  }
-  return best;
-}
-
-double GeneratorCore::rate(const Stream& s, double u) const {
-  const StreamModel& m = model(s.dir);
-  if (s.dir == Direction::kBackward) return m.rate_oncoming_per_s(u);
-  return s.edge == Edge::kRear ? m.rate_rear_per_s(u) : m.rate_front_per_s(u);
-}
-
-SpeedDraw GeneratorCore::draw(const Stream& s, double u) {
-  const StreamModel& m = model(s.dir);
-  if (s.dir == Direction::kBackward) return m.draw_oncoming(rng_, u);
-  return s.edge == Edge::kRear ? m.draw_rear(rng_, u) : m.draw_front(rng_, u);
+double GeneratorCore::rate(const EdgeStream& s, double u) const {
+  const ObservedStream& stream = this->stream(s.dir);
+  if (s.dir == Direction::kBackward) return stream.rate_oncoming_per_s(u);
+  return s.edge == Edge::kRear ? stream.rate_rear_per_s(u) : stream.rate_front_per_s(u);
 }
 
 void GeneratorCore::arrive(const StepInput& in) {
   const double u = std::max(0.0, in.ego.speed_mps);
-  for (Stream& s : streams_) {
+  for (EdgeStream& s : edges_) {
+    const ObservedStream& stream = this->stream(s.dir);
+    if (stream.empty()) continue;
     s.accumulated += rate(s, u) * scenario_.step_s;
     while (s.accumulated >= s.next) {
       s.accumulated -= s.next;
       s.next = rng_.exponential(1.0);
-      const SpeedDraw d = draw(s, u);
-      s.queue.push_back({d.type_index, d.speed_mps});
+      const Platoon& p = s.dir == Direction::kBackward ? stream.draw_oncoming(rng_, u)
+                         : s.edge == Edge::kRear        ? stream.draw_rear(rng_, u)
+                                                        : stream.draw_front(rng_, u);
+      s.queue.push_back({p, 0});
       ++counters_.arrivals;
-      if (s.queue.size() > config_.max_queue) s.queue.pop_front();
+      ++counters_.arrivals_at[static_cast<std::size_t>(s.entrance)];
+      counters_.members_at[static_cast<std::size_t>(s.entrance)] += p.members.size();
+      if (s.queue.size() > config_.max_queue) {
+        s.queue.pop_front();
+        ++counters_.dropped;
+      }
     }
   }
+}
+
+bool GeneratorCore::place_one_by_one(EdgeStream& s, double u, const WindowBounds& w, Step step, StepOutput& out) {
+  Pending& pending = s.queue.front();
+  const double edge_p = sign(s.dir) * edge_position(s.edge, w);
+  const bool from_behind = s.dir == Direction::kForward && s.edge == Edge::kRear;
+  while (pending.next_member < pending.platoon.members.size()) {
+    const Vehicle& model = pending.platoon.members[pending.next_member].vehicle;
+    if (from_behind && model.speed_mps <= u) {  // a member slower than the window never reaches it
+      ++counters_.not_entered;
+      ++pending.next_member;
+      continue;
+    }
+    const auto room = find_entry(index_, s.dir, edge_p, model.speed_mps, scenario_.vehicle_types[model.type_index],
+                                 model.lane);
+    // From behind, a vehicle held below the window's speed by the one ahead would not reach it yet.
+    if (!room || (from_behind && room->speed_mps <= u)) return false;
+    out.handoffs.push_back(birth(model, s.dir, room->lane, edge_p, room->speed_mps, w, step, HandoffReason::kBirth));
+    ++counters_.placed;
+    ++counters_.placed_at[static_cast<std::size_t>(s.entrance)];
+    ++pending.next_member;
+  }
+  return true;
+}
+
+bool GeneratorCore::place_whole(EdgeStream& s, const WindowBounds& w, Step, StepOutput&) {
+  // A slow platoon joins the far end of the front zone whole, its last vehicle front_zone_m beyond
+  // the edge, as soon as it fits there; it enters the window when the edge reaches it (hand_over).
+  const Platoon& platoon = s.queue.front().platoon;
+  const double leader_p = w.front_edge_m + config_.front_zone_m + platoon.members.back().offset_m;
+  const int lane = platoon.members.front().vehicle.lane;
+  for (const StreamVehicle& m : platoon.members) {
+    if (!fits(s.dir, lane, leader_p - m.offset_m, m.vehicle)) return false;
+  }
+  for (const StreamVehicle& m : platoon.members) {
+    zone_.add(make(m.vehicle, s.dir, lane, leader_p - m.offset_m, m.vehicle.speed_mps));
+    ++counters_.ahead;
+  }
+  return true;
+}
+
+void GeneratorCore::hand_over(const StepInput& in, StepOutput& out) {
+  const WindowBounds w = WindowBounds::around(in.ego.s_m, scenario_.window);
+  const auto reached = zone_.reached_by(w.front_edge_m);
+  for (const Vehicle& v : zone_.vehicles().vehicles()) out.states.push_back({v, w.region_of(v.s_m)});
+  for (const Vehicle& v : reached) {
+    out.states.push_back({v, w.region_of(v.s_m)});
+    Handoff h = make_handoff(v, in.step, kSelf, Role::kMeso, Region::kOuterFront, HandoffReason::kBirth);
+    inbox_.note_sent(h);
+    out.handoffs.push_back(std::move(h));
+    ++counters_.placed;
+    ++counters_.placed_at[static_cast<std::size_t>(Entrance::kFront)];
+  }
+  for (const Vehicle& v : zone_.beyond(w.front_edge_m + config_.front_zone_limit_m)) {
+    Handoff h = make_handoff(v, in.step, kSelf, Role::kNone, Region::kOutside, HandoffReason::kLeftWindow);
+    inbox_.note_sent(h);
+    out.handoffs.push_back(std::move(h));
+    ++counters_.left_ahead;
+  }
+  std::sort(out.states.begin(), out.states.end(),
+            [](const VehicleReport& a, const VehicleReport& b) { return a.vehicle.id < b.vehicle.id; });
 }
 
 void GeneratorCore::place(const StepInput& in, StepOutput& out) {
   const WindowBounds w = WindowBounds::around(in.ego.s_m, scenario_.window);
   const double u = std::max(0.0, in.ego.speed_mps);
-  for (Stream& s : streams_) {
-    const double edge_s = edge_position(s.edge, w);
+  for (EdgeStream& s : edges_) {
+    const bool whole = s.dir == Direction::kForward && s.edge == Edge::kFront;
     while (!s.queue.empty()) {
-      const Pending& next = s.queue.front();
-      const bool from_behind = s.dir == Direction::kForward && s.edge == Edge::kRear;
-      auto room = find_room(s.dir, edge_s, next.speed_mps, next.type_index);
-      // From behind, a vehicle that cannot go faster than the window would never enter it: wait.
-      if (!room || (from_behind && room->second <= u)) break;
-      out.handoffs.push_back(
-          birth(s.dir, room->first, edge_s, room->second, next.speed_mps, next.type_index, w, in.step,
-                HandoffReason::kBirth));
+      const bool done = whole ? place_whole(s, w, in.step, out) : place_one_by_one(s, u, w, in.step, out);
+      if (!done) break;
       s.queue.pop_front();
-      ++counters_.placed;
     }
     counters_.waited_steps += s.queue.size();
   }

@@ -1,49 +1,75 @@
 #pragma once
 // Vehicle generation for a window that moves with the ego (thesis ch. 3.2, papers I-II).
 //
-// Per direction the demand is a stationary stream (common/traffic/stream.hpp). Seen from the
-// window moving at the ego's speed u, vehicles faster than u enter at the rear edge, slower ones at
-// the front edge, and oncoming vehicles at the front edge, each as a Poisson process whose rate
-// follows u (so that the flow past any fixed road point equals the demand), with the entering
-// speeds drawn from the matching conditional distribution. At the start, and whenever the ego
-// jumps, the whole window is filled at the stream's density with space-mean speeds.
+// Per direction, the demand's stream is observed once at startup as the model itself produces it
+// (common/traffic/observed_stream.hpp: a road simulation of the demand, cut into platoons), so
+// that speeds, densities and platoons are those of interacting traffic, not of drivers at their
+// desired speeds. Seen from the window moving at the ego's speed u (Wardrop's moving-observer
+// relations, for platoons): platoons faster than u enter at the rear edge, slower ones at the
+// front edge and oncoming ones at the front edge, each edge a Poisson process whose rate follows
+// u, the platoon drawn with the matching weight.
 //
 // Phases of a step:
-//   fill      at the first step or after a jump: vehicles across the whole window
-//   arrive    Poisson arrivals at each edge join that edge's queue (type and speed drawn now)
-//   place     queued vehicles enter where their lane has room; the others wait (counted)
-// New vehicles are handed to micro (inner region) or meso (outer regions) at once.
+//   adopt     vehicles that left the window ahead join the front zone
+//   perceive  the world at step-1 moved on to this step, births not yet visible, and the front zone
+//   ahead     the front zone's vehicles move (front_zone.hpp: the traffic just beyond the front edge)
+//   fill      at the first step or after a jump: a stretch of the observed stream fills the window
+//             and the front zone
+//   arrive    platoon arrivals at each edge join that edge's queue
+//   place     from behind and oncoming, a platoon's vehicles enter one by one at the edge, each
+//             when its lane has room there; from ahead, a slow platoon joins the far end of the
+//             front zone whole, and enters the window when the front edge reaches it
+//   hand over front-zone vehicles the edge has reached go to meso; those far ahead retire
+// New vehicles are handed at once to micro (inner region) or meso (outer regions).
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <optional>
 #include <vector>
 
 #include "core/random.hpp"
+#include "generator/core/front_zone.hpp"
 #include "road/road.hpp"
 #include "road/window.hpp"
 #include "scenario/config.hpp"
 #include "traffic/handoff.hpp"
 #include "traffic/lane_index.hpp"
+#include "traffic/observed_stream.hpp"
 #include "traffic/step_io.hpp"
-#include "traffic/stream.hpp"
 
 namespace entourage::generator {
 
 enum class Edge : std::uint8_t { kRear = 0, kFront = 1 };
 
+// The three entrances of the window: the ego's direction from behind and from ahead, and the
+// oncoming direction from ahead.
+enum class Entrance : std::uint8_t { kRear = 0, kFront = 1, kOncoming = 2 };
+inline constexpr std::size_t kEntrances = 3;
+
 struct Counters {
-  std::uint64_t filled = 0;        // vehicles placed by initial fills
-  std::uint64_t fill_dropped = 0;  // fill points with no room left in the window
-  std::uint64_t arrivals = 0;      // arrivals drawn at the edges
-  std::uint64_t placed = 0;        // arrivals that entered
-  std::uint64_t waited_steps = 0;  // vehicle-steps spent queued at an edge for lack of room
-  std::uint64_t fills = 0;         // number of initial fills (1 + jumps)
+  std::array<std::uint64_t, kEntrances> arrivals_at{};  // platoons, per entrance
+  std::array<std::uint64_t, kEntrances> members_at{};   // vehicles in the arrived platoons
+  std::array<std::uint64_t, kEntrances> placed_at{};    // vehicles, per entrance
+  std::uint64_t filled = 0;         // vehicles placed by initial fills
+  std::uint64_t fill_skipped = 0;   // fill vehicles that would have overlapped the ego or others
+  std::uint64_t arrivals = 0;       // platoons arrived at the edges
+  std::uint64_t placed = 0;         // vehicles that entered at the edges
+  std::uint64_t waited_steps = 0;   // platoon-steps spent queued at an edge for lack of room
+  std::uint64_t dropped = 0;        // platoons dropped from an overfull edge queue
+  std::uint64_t not_entered = 0;    // platoon members that could not enter (too slow, or no room)
+  std::uint64_t ahead = 0;          // vehicles that joined the front zone
+  std::uint64_t left_ahead = 0;     // front-zone vehicles that left far ahead without entering
+  std::uint64_t fills = 0;          // number of initial fills (1 + jumps)
 };
 
 struct GeneratorConfig {
   double jump_threshold_m = 100.0;  // an ego moving further than this in a step has jumped
-  std::size_t max_queue = 200;      // arrivals waiting at one edge before the oldest is dropped
+  double front_zone_m = 300.0;      // the front zone's reach beyond the front edge
+  int fill_candidates = 8;          // stretches drawn for a fill; the closest to the mean density wins
+  double front_zone_limit_m = 1500.0;  // vehicles further ahead than this leave the front zone
+  std::size_t max_queue = 100;      // platoons waiting at one edge before the oldest is dropped
+  StreamObservation observation;
 };
 
 class GeneratorCore {
@@ -54,55 +80,52 @@ class GeneratorCore {
 
   const Counters& counters() const { return counters_; }
   std::size_t queued() const;
+  const Fleet& front_zone() const { return zone_.vehicles(); }
+  const ObservedStream& stream(Direction d) const { return d == Direction::kForward ? forward_ : backward_; }
 
  private:
   struct Pending {
-    std::uint8_t type_index;
-    double speed_mps;
+    Platoon platoon;
+    std::size_t next_member = 0;
   };
-  struct Stream {
+  struct EdgeStream {
     Direction dir;
     Edge edge;
+    Entrance entrance;
     double accumulated = 0.0;  // integrated rate since the last arrival
     double next = 1.0;         // unit-exponential threshold of the next arrival
     std::deque<Pending> queue;
   };
 
-  struct Spot {
-    int lane;
-    double progress_m;
-    double speed_mps;  // the speed it starts with there
-  };
-
-  bool needs_fill(const StepInput& in) const;
-  std::optional<Spot> fill_spot(Direction dir, double progress_m, double speed_mps, std::uint8_t type_index) const;
-  double room_behind(Direction dir, int lane, double progress_m, double speed_mps, const VehicleTypeConfig& type) const;
   void perceive(const StepInput& in);
+  void index_world(const StepInput& in);
+  void hand_over(const StepInput& in, StepOutput& out);
+  Vehicle make(const Vehicle& model, Direction dir, int lane, double progress_m, double speed_mps);
+  bool needs_fill(const StepInput& in) const;
   void fill(const StepInput& in, StepOutput& out);
   void arrive(const StepInput& in);
   void place(const StepInput& in, StepOutput& out);
-  // The lane (and the speed it allows) where a vehicle can enter at s_m, preferring the lane that
-  // lets it drive fastest; nullopt if no lane has room.
-  std::optional<std::pair<int, double>> find_room(Direction dir, double s_m, double speed_mps,
-                                                  std::uint8_t type_index) const;
-  Handoff birth(Direction dir, int lane, double s_m, double speed_mps, double desired_speed_mps,
-                std::uint8_t type_index, const WindowBounds& w, Step step, HandoffReason reason);
-  double rate(const Stream& s, double u) const;
-  SpeedDraw draw(const Stream& s, double u);
-  const StreamModel& model(Direction d) const { return d == Direction::kForward ? forward_ : backward_; }
+  bool place_one_by_one(EdgeStream& s, double u, const WindowBounds& w, Step step, StepOutput& out);
+  bool place_whole(EdgeStream& s, const WindowBounds& w, Step step, StepOutput& out);
+  bool fits(Direction dir, int lane, double progress_m, const Vehicle& v) const;
+  Handoff birth(const Vehicle& model, Direction dir, int lane, double progress_m, double speed_mps,
+                const WindowBounds& w, Step step, HandoffReason reason);
+  double rate(const EdgeStream& s, double u) const;
 
   ScenarioConfig scenario_;
   GeneratorConfig config_;
   Road road_;
-  StreamModel forward_;
-  StreamModel backward_;
   Random rng_;
   std::uint64_t seed_;
+  ObservedStream forward_;
+  ObservedStream backward_;
   VehicleId next_id_ = 1;
-  std::vector<Stream> streams_;
+  std::vector<EdgeStream> edges_;
   std::optional<EgoObservation> last_ego_;
-  LaneIndex index_;                   // world at step-1 moved to this step, plus recent births
+  LaneIndex index_;                     // world at step-1 moved on to this step, plus births
   std::vector<Handoff> recent_births_;  // not yet visible in the world state
+  FrontZone zone_;
+  HandoffInbox inbox_{Role::kGenerator, {Region::kOutside}};  // vehicles leaving the window ahead
   Counters counters_;
 };
 

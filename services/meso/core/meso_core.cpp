@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "meso/core/meso_lanes.hpp"
+#include "traffic/driving.hpp"
 #include "meso/core/meso_model.hpp"
 
 namespace entourage::meso {
@@ -45,25 +46,6 @@ void MesoCore::perceive(const StepInput& in) {
 }
 
 namespace {
-// A vehicle handed over in the middle of a lane change finishes the lateral movement (meso starts
-// no lane change and drops one that has only been signalled); while moving it is in both lanes.
-void continue_lane_change(Vehicle& v, double dt) {
-  LaneChangeState& lc = v.lane_change;
-  lc.since_last_change_s += dt;
-  if (lc.phase == LaneChangePhase::kSignalling) {
-    lc.phase = LaneChangePhase::kNone;
-    lc.to_lane = lc.from_lane = v.lane;
-  } else if (lc.moving()) {
-    lc.phase_elapsed_s += dt;
-    if (lc.phase_elapsed_s >= lc.duration_s) {
-      v.lane = lc.to_lane;
-      lc.from_lane = lc.to_lane;
-      lc.phase = LaneChangePhase::kNone;
-      lc.phase_elapsed_s = 0.0;
-      lc.since_last_change_s = 0.0;
-    }
-  }
-}
 void start_lane_change(Vehicle& v, int lane) {
   LaneChangeState& lc = v.lane_change;
   lc.from_lane = v.lane;
@@ -75,14 +57,9 @@ void start_lane_change(Vehicle& v, int lane) {
 }  // namespace
 
 Ahead MesoCore::ahead_of(const Vehicle& v) const {
-  Ahead a;
-  for (int lane : {v.lane, v.target_lane()}) {
-    const Occupant* leader = index_.leader(v.direction, lane, v.progress_m(), v.id);
-    if (leader == nullptr) continue;
-    const double g = std::max(0.0, gap_between(*leader, v.progress_m(), v.length_m));
-    if (a.gap_m < 0.0 || g < a.gap_m) a = {g, leader->speed_mps};
-  }
-  return a;
+  const Occupant* leader = nearest_leader(v, index_);
+  if (leader == nullptr) return {};
+  return {std::max(0.0, gap_between(*leader, v.progress_m(), v.length_m)), leader->speed_mps};
 }
 
 const EquilibriumSpeed& MesoCore::equilibrium_of(const Vehicle& v) {
@@ -121,6 +98,18 @@ StepOutput MesoCore::hand_off(const StepInput& in) {
   const WindowBounds w = WindowBounds::around(in.ego.s_m, scenario_.window);
   const double margin = scenario_.window.handoff_hysteresis_m;
   StepOutput out;
+  // Vehicles of the ego's direction leaving ahead go on in the generator's front zone (they are the
+  // traffic ahead of the window); all others leaving the window retire.
+  auto ahead = fleet_.extract_if(
+      [&](const Vehicle& v) { return v.direction == Direction::kForward && v.s_m > w.front_edge_m + margin; });
+  for (const Vehicle& v : ahead) {
+    equilibrium_.erase(v.id);
+    out.states.push_back({v, Region::kOutside});
+    Handoff h = make_handoff(v, in.step, self_, Role::kGenerator, Region::kOutside, HandoffReason::kLeftWindow);
+    inbox_.note_sent(h);
+    out.handoffs.push_back(std::move(h));
+    ++counters_.to_front_zone;
+  }
   auto retiring = fleet_.extract_if(
       [&](const Vehicle& v) { return v.s_m < w.rear_edge_m - margin || v.s_m > w.front_edge_m + margin; });
   for (const Vehicle& v : retiring) {
@@ -146,6 +135,8 @@ StepOutput MesoCore::hand_off(const StepInput& in) {
   }
   std::sort(out.handoffs.begin(), out.handoffs.end(),
             [](const Handoff& a, const Handoff& b) { return a.vehicle.id < b.vehicle.id; });
+  std::sort(out.states.begin(), out.states.end(),
+            [](const VehicleReport& a, const VehicleReport& b) { return a.vehicle.id < b.vehicle.id; });
   return out;
 }
 

@@ -7,7 +7,8 @@
 //   move      every vehicle's next speed from its gap (meso_model.hpp) and lane choice
 //             (meso_lanes.hpp) from the same snapshot, then integrate
 //   hand off  vehicles in the inner region go to micro, vehicles in a region this instance does
-//             not serve go to the meso that does, vehicles beyond the window's edges retire
+//             not serve go to the meso that does, vehicles of the ego's direction beyond the front
+//             edge go on in the generator's front zone, other vehicles beyond the edges retire
 
 #include <cstdint>
 #include <unordered_map>
@@ -29,6 +30,7 @@ struct Counters {
   std::uint64_t to_micro = 0;
   std::uint64_t to_other_meso = 0;
   std::uint64_t retired = 0;
+  std::uint64_t to_front_zone = 0;  // left ahead in the ego's direction: on to the generator
   std::uint64_t duplicate_handoffs = 0;
   std::uint64_t emergency_stops = 0;  // vehicle-steps where the floor-gap guard overrode braking
 };

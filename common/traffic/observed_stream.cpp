@@ -1,0 +1,157 @@
+#include "traffic/observed_stream.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "traffic/road_sim.hpp"
+
+namespace entourage {
+
+namespace {
+
+// Cuts one snapshot (sorted by offset) into platoons, lane by lane, from the front of the stretch
+// backwards: a vehicle closer than `headway_s` behind the previous one joins its platoon. A
+// platoon cut by the stretch's ends is kept as it is (rare, and its speed is right).
+void cut_into_platoons(const std::vector<StreamVehicle>& snap, int lanes, double headway_s,
+                       std::vector<Platoon>* out) {
+  for (int lane = 0; lane < lanes; ++lane) {
+    Platoon current;
+    double leader_offset = 0.0;
+    double previous_rear = 0.0;
+    for (auto it = snap.rbegin(); it != snap.rend(); ++it) {
+      const StreamVehicle& v = *it;
+      if (v.vehicle.lane != lane) continue;
+      const double front = v.offset_m + 0.5 * v.vehicle.length_m;
+      const bool joins = !current.members.empty() &&
+                         previous_rear - front < headway_s * std::max(v.vehicle.speed_mps, 1.0);
+      if (!joins) {
+        if (!current.members.empty()) out->push_back(std::move(current));
+        current = Platoon{v.vehicle.speed_mps, {}};
+        leader_offset = v.offset_m;
+      }
+      current.members.push_back({leader_offset - v.offset_m, v.vehicle});
+      previous_rear = v.offset_m - 0.5 * v.vehicle.length_m;
+    }
+    if (!current.members.empty()) out->push_back(std::move(current));
+  }
+}
+
+}  // namespace
+
+ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, const StreamObservation& how,
+                               std::uint64_t seed) {
+  flow_ = scenario.flow(dir).flow_veh_per_s;
+  const int lanes = scenario.road.lanes(dir);
+  if (flow_ <= 0.0 || lanes == 0) return;
+  RoadSimConfig cfg;
+  cfg.length_m = how.road_length_m;
+  RoadSim sim(scenario, dir, cfg, seed);
+  sampled_length_m_ = how.road_length_m - how.settled_from_m;
+  double next_snapshot = how.warmup_s;
+  std::size_t vehicles = 0;
+  while (snapshots_.size() < static_cast<std::size_t>(how.snapshots)) {
+    sim.step();
+    if (sim.time_s() + 1e-9 < next_snapshot) continue;
+    next_snapshot += how.snapshot_every_s;
+    std::vector<StreamVehicle> snap;
+    for (const Vehicle& v : sim.fleet().vehicles()) {
+      if (v.s_m >= how.settled_from_m && v.s_m < how.road_length_m) snap.push_back({v.s_m - how.settled_from_m, v});
+    }
+    std::sort(snap.begin(), snap.end(), [](const auto& a, const auto& b) { return a.offset_m < b.offset_m; });
+    vehicles += snap.size();
+    cut_into_platoons(snap, lanes, how.platoon_headway_s, &platoons_);
+    snapshots_.push_back(std::move(snap));
+  }
+  const double observed_length = sampled_length_m_ * static_cast<double>(snapshots_.size());
+  vehicle_density_ = static_cast<double>(vehicles) / observed_length;
+  double carried = 0.0;  // sum over platoons of size x speed
+  for (const auto& p : platoons_) carried += static_cast<double>(p.members.size()) * p.speed_mps;
+  const double observed_flow = carried / observed_length;
+  platoon_density_ = static_cast<double>(platoons_.size()) / observed_length *
+                     (observed_flow > 0.0 ? flow_ / observed_flow : 1.0);
+}
+
+double ObservedStream::mean_speed_mps() const {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (const auto& snap : snapshots_) {
+    for (const auto& v : snap) sum += v.vehicle.speed_mps;
+    n += snap.size();
+  }
+  return n == 0 ? 0.0 : sum / static_cast<double>(n);
+}
+
+template <typename Weight>
+double ObservedStream::platoon_mean(Weight w) const {
+  if (platoons_.empty()) return 0.0;
+  double sum = 0.0;
+  for (const auto& p : platoons_) sum += w(p.speed_mps);
+  return sum / static_cast<double>(platoons_.size());
+}
+
+template <typename Weight>
+const Platoon& ObservedStream::draw(Random& rng, Weight w) const {
+  double total = 0.0;
+  for (const auto& p : platoons_) total += w(p.speed_mps);
+  double target = rng.uniform() * total;
+  for (const auto& p : platoons_) {
+    target -= w(p.speed_mps);
+    if (target < 0.0) return p;
+  }
+  return platoons_.back();
+}
+
+double ObservedStream::rate_rear_per_s(double u) const {
+  return platoon_density_ * platoon_mean([u](double v) { return std::max(0.0, v - u); });
+}
+
+double ObservedStream::rate_front_per_s(double u) const {
+  return platoon_density_ * platoon_mean([u](double v) { return std::max(0.0, u - v); });
+}
+
+double ObservedStream::rate_oncoming_per_s(double u) const {
+  return platoon_density_ * platoon_mean([u](double v) { return v + u; });
+}
+
+const Platoon& ObservedStream::draw_rear(Random& rng, double u) const {
+  return draw(rng, [u](double v) { return std::max(0.0, v - u); });
+}
+
+const Platoon& ObservedStream::draw_front(Random& rng, double u) const {
+  return draw(rng, [u](double v) { return std::max(0.0, u - v); });
+}
+
+const Platoon& ObservedStream::draw_oncoming(Random& rng, double u) const {
+  return draw(rng, [u](double v) { return v + u; });
+}
+
+std::vector<StreamVehicle> ObservedStream::stretch(Random& rng, double length_m, int candidates) const {
+  std::vector<StreamVehicle> best;
+  const double wanted = vehicle_density_ * length_m;
+  for (int i = 0; i < std::max(1, candidates); ++i) {
+    std::vector<StreamVehicle> s = one_stretch(rng, length_m);
+    if (i == 0 || std::abs(static_cast<double>(s.size()) - wanted) < std::abs(static_cast<double>(best.size()) - wanted)) {
+      best = std::move(s);
+    }
+  }
+  return best;
+}
+
+std::vector<StreamVehicle> ObservedStream::one_stretch(Random& rng, double length_m) const {
+  std::vector<StreamVehicle> out;
+  if (snapshots_.empty()) return out;
+  // Stretches longer than the observed road are put together from several snapshots.
+  for (double done = 0.0; done < length_m;) {
+    const auto index = static_cast<std::size_t>(rng.uniform() * static_cast<double>(snapshots_.size()));
+    const auto& snap = snapshots_[std::min(index, snapshots_.size() - 1)];
+    const double piece = std::min(length_m - done, sampled_length_m_);
+    const double from = rng.uniform(0.0, sampled_length_m_ - piece);
+    for (const auto& v : snap) {
+      if (v.offset_m >= from && v.offset_m < from + piece) out.push_back({done + v.offset_m - from, v.vehicle});
+    }
+    done += piece;
+  }
+  return out;
+}
+
+}  // namespace entourage

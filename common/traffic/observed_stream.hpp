@@ -1,0 +1,91 @@
+#pragma once
+// The stationary stream of a demand as the model itself produces it, observed in a road
+// simulation (road_sim.hpp): snapshots of a stretch of road where the stream has settled, cut
+// into platoons. Interacting traffic is not a set of independent vehicles at their desired
+// speeds: drivers are slower than they wish, and slow ones are often held up behind a slower
+// leader. The generator fills the window with a stretch of such a snapshot and feeds its edges
+// with such platoons, so that both the speeds and the structure of the stream are right.
+//
+// A platoon is a leader and the vehicles following it in its lane closer than `platoon_headway_s`.
+// The moving-observer relations (../shared/notes/traffic-theory.md) hold for platoons as for
+// vehicles: with platoon density k_p and the space-mean distribution f_p of platoon speeds (the
+// snapshots are space samples), a window moving at u is entered from behind at k_p E[(v - u)+],
+// from ahead at k_p E[(u - v)+] and by oncoming platoons at k_p E[v + u], each platoon chosen with
+// that weight. The platoon density is scaled so that the platoons carry exactly the demanded flow
+// (sum of size x speed over the sampled length = q): the sample gives the stream's structure, the
+// demand its flow.
+
+#include <cstdint>
+#include <vector>
+
+#include "core/random.hpp"
+#include "scenario/config.hpp"
+#include "traffic/vehicle.hpp"
+
+namespace entourage {
+
+// Snapshots are taken far enough apart that the vehicles of one have left the sampled stretch by
+// the next (every 120 s, 10 km of settled road): independent samples of the stream.
+struct StreamObservation {
+  double road_length_m = 12000.0;
+  double settled_from_m = 2000.0;  // the stream is sampled beyond this distance from the source
+  double warmup_s = 450.0;         // before the first snapshot: the stream reaches the road's end
+  double snapshot_every_s = 120.0;
+  int snapshots = 20;
+  double platoon_headway_s = 3.0;
+};
+
+// A vehicle of a snapshot or of a platoon: the position along its direction of travel from the
+// stretch's rear end (snapshots), or the distance behind its platoon's leader (platoons).
+struct StreamVehicle {
+  double offset_m = 0.0;
+  Vehicle vehicle;  // lane, speed, type, size and driver; id and position are set on entry
+};
+
+struct Platoon {
+  double speed_mps = 0.0;             // the leader's
+  std::vector<StreamVehicle> members;  // leader first (offset 0), then backwards
+};
+
+class ObservedStream {
+ public:
+  ObservedStream() = default;
+  // Observes the stream of `dir`'s demand. A direction without flow gives an empty stream.
+  ObservedStream(const ScenarioConfig& scenario, Direction dir, const StreamObservation& how, std::uint64_t seed);
+
+  bool empty() const { return platoons_.empty(); }
+  double flow_veh_per_s() const { return flow_; }
+  double density_per_m() const { return vehicle_density_; }
+  double platoon_density_per_m() const { return platoon_density_; }
+  double mean_speed_mps() const;  // space mean over vehicles
+  const std::vector<Platoon>& platoons() const { return platoons_; }
+
+  double rate_rear_per_s(double window_speed_mps) const;  // platoons per second
+  double rate_front_per_s(double window_speed_mps) const;
+  double rate_oncoming_per_s(double window_speed_mps) const;
+  const Platoon& draw_rear(Random& rng, double window_speed_mps) const;
+  const Platoon& draw_front(Random& rng, double window_speed_mps) const;
+  const Platoon& draw_oncoming(Random& rng, double window_speed_mps) const;
+
+  // A stretch of `length_m` of the settled stream (offsets in [0, length_m) from its rear end).
+  // Of `candidates` stretches drawn, the one whose number of vehicles is closest to the stream's
+  // mean density times the length (every run starts at the demanded density, with the stream's
+  // structure; a single draw would vary by a quarter in a window of a kilometre or two).
+  std::vector<StreamVehicle> stretch(Random& rng, double length_m, int candidates = 1) const;
+
+ private:
+  std::vector<StreamVehicle> one_stretch(Random& rng, double length_m) const;
+  template <typename Weight>
+  double platoon_mean(Weight w) const;
+  template <typename Weight>
+  const Platoon& draw(Random& rng, Weight w) const;
+
+  double flow_ = 0.0;
+  double sampled_length_m_ = 0.0;
+  double vehicle_density_ = 0.0;
+  double platoon_density_ = 0.0;  // scaled to the demanded flow
+  std::vector<std::vector<StreamVehicle>> snapshots_;  // sorted by offset
+  std::vector<Platoon> platoons_;
+};
+
+}  // namespace entourage
