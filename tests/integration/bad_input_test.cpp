@@ -9,6 +9,7 @@ namespace entourage::testing {
 namespace {
 
 constexpr int kDomain = 112;
+constexpr int kDomainService = 115;  // a different domain: tests run in parallel and check for leftovers
 
 struct BadCase {
   const char* file;
@@ -46,7 +47,7 @@ TEST_P(BadScenario, CheckRefusesItToo) {
 
 TEST_P(BadScenario, AServiceRefusesItAtStartup) {
   const BadCase c = GetParam();
-  const CommandResult r = run_command(bin("entourage-micro") + " --domain " + std::to_string(kDomain) + " --scenario " +
+  const CommandResult r = run_command(bin("entourage-micro") + " --domain " + std::to_string(kDomainService) + " --scenario " +
                                       source(std::string("tests/scenarios/") + c.file));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find(c.where), std::string::npos) << r.output;
