@@ -67,6 +67,42 @@ FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int dire
   return f;
 }
 
+PastTheEgo measure_past_ego(const Tables& t, const ScenarioConfig& sc) {
+  PastTheEgo p;
+  if (t.ego.size() < 2) return p;
+  std::unordered_map<std::uint64_t, double> ego_s;
+  for (const auto& e : t.ego) ego_s[e.step] = e.s_m;
+  const WindowConfig& wc = sc.window;
+  const double window_m = wc.inner_ahead_m + wc.inner_behind_m + wc.outer_ahead_m + wc.outer_behind_m;
+  std::unordered_map<std::uint32_t, std::pair<std::uint64_t, double>> last;  // id -> (step, s - s_ego)
+  double forward_vehicle_steps = 0.0;
+  double backward_vehicle_steps = 0.0;
+  for (const VehicleRow& r : t.vehicles) {
+    auto e = ego_s.find(r.step);
+    if (e == ego_s.end() || r.region == "outside") continue;
+    const double rel = r.s_m - e->second;
+    (r.direction > 0 ? forward_vehicle_steps : backward_vehicle_steps) += 1.0;
+    auto it = last.find(r.id);
+    if (it != last.end() && it->second.first + 1 == r.step) {
+      const double before = it->second.second;
+      if (r.direction > 0 && before < 0.0 && rel >= 0.0) ++p.overtaking;
+      if (r.direction > 0 && before >= 0.0 && rel < 0.0) ++p.overtaken;
+      if (r.direction < 0 && before >= 0.0 && rel < 0.0) ++p.met;
+    }
+    last[r.id] = {r.step, rel};
+  }
+  const double steps = static_cast<double>(t.ego.size());
+  const double hours = steps * sc.step_s / kSecondsPerHour;
+  double u = 0.0;
+  for (const auto& e : t.ego) u += e.speed_mps;
+  u = mps_to_kph(u / steps);
+  const double k_forward = forward_vehicle_steps / steps / (window_m / 1000.0);  // veh/km
+  const double k_backward = backward_vehicle_steps / steps / (window_m / 1000.0);
+  p.forward_veh_per_h = (static_cast<double>(p.overtaking) - static_cast<double>(p.overtaken)) / hours + k_forward * u;
+  p.backward_veh_per_h = static_cast<double>(p.met) / hours - k_backward * u;
+  return p;
+}
+
 RunSummary summarize(const Recording& r, const Tables& t, const ScenarioConfig& sc, double spacing) {
   RunSummary s;
   s.steps = t.ego.empty() ? 0 : t.ego.back().step;
@@ -91,6 +127,7 @@ RunSummary summarize(const Recording& r, const Tables& t, const ScenarioConfig& 
   for (const auto& [region, total] : sum) s.mean_speed_mps[region] = total / static_cast<double>(s.samples_in[region]);
   s.forward = measure_flow(t, sc, 1, spacing);
   s.backward = measure_flow(t, sc, -1, spacing);
+  s.past_ego = measure_past_ego(t, sc);
   if (!t.ego.empty()) {
     double total = 0.0;
     for (const auto& e : t.ego) total += e.speed_mps;

@@ -30,6 +30,19 @@ struct FlowMeasurement {
   double relative_error() const;  // (measured - demand) / demand; 0 if no demand
 };
 
+// Flow past the ego, the moving-observer way (Wardrop 1952): vehicles of its direction that pass
+// it and that it passes, oncoming vehicles it meets, and the density around it give
+//   q = (overtaking - overtaken) / T + k u        (its direction)
+//   q = met / T - k u                              (oncoming)
+// with k the direction's mean density in the window and u the ego's mean speed.
+struct PastTheEgo {
+  std::uint64_t overtaking = 0;  // passive catch-ups: vehicles of its direction passing the ego
+  std::uint64_t overtaken = 0;   // active catch-ups: vehicles the ego passes
+  std::uint64_t met = 0;         // oncoming vehicles met
+  double forward_veh_per_h = 0.0;
+  double backward_veh_per_h = 0.0;
+};
+
 struct RunSummary {
   std::uint64_t steps = 0;
   double simulated_s = 0.0;
@@ -42,6 +55,7 @@ struct RunSummary {
   std::map<std::string, std::uint64_t> samples_in;  // per region name
   FlowMeasurement forward;
   FlowMeasurement backward;
+  PastTheEgo past_ego;
   double ego_mean_speed_mps = 0.0;
   double ego_distance_m = 0.0;
 };
@@ -50,5 +64,6 @@ RunSummary summarize(const Recording& r, const Tables& t, const ScenarioConfig& 
 
 // FlowMeasurement for one direction from rows alone (also used by tests on exported CSV).
 FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int direction, double detector_spacing_m);
+PastTheEgo measure_past_ego(const Tables& t, const ScenarioConfig& sc);
 
 }  // namespace entourage::recording

@@ -43,7 +43,7 @@ int run(const dds::ServiceContext& ctx) {
         dds::TopicCounts written{};
         for (const auto& r : core.step(ego)) {
           plays.write(to_msg(r, k, ego.time_s));
-          spdlog::info("play \"{}\": {} {}", r.name, director::to_string(r.phase), r.detail);
+          if (!r.detail.empty()) spdlog::info("play \"{}\": {}: {}", r.name, director::to_string(r.phase), r.detail);
           ++written[static_cast<std::size_t>(dds::Topic::kPlayStatus)];
         }
         status.set_counters(inbox.bad_samples(), 0);

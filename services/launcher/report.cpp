@@ -68,6 +68,10 @@ bool print_report(const ReportInput& in, std::ostream& out) {
   out << " ego " << f1(mps_to_kph(s.ego_mean_speed_mps)) << " km/h over " << f1(s.ego_distance_m / 1000.0) << " km\n";
   print_flow("forward", s.forward, out);
   print_flow("backward", s.backward, out);
+  const auto& pe = s.past_ego;
+  out << "  past the ego: " << pe.overtaking << " vehicles overtook it, it overtook " << pe.overtaken << ", it met "
+      << pe.met << " oncoming; moving-observer flow " << f1(pe.forward_veh_per_h) << " veh/h forward, "
+      << f1(pe.backward_veh_per_h) << " veh/h backward\n";
   if (in.realtime && !in.latencies_ms.empty()) {
     out << "  ego state to world state: median " << f1(percentile(in.latencies_ms, 0.5)) << " ms, 99th percentile "
         << f1(percentile(in.latencies_ms, 0.99)) << " ms, max " << f1(percentile(in.latencies_ms, 1.0)) << " ms over "

@@ -1,0 +1,150 @@
+// The command-line parser and the service inbox (what arrives over DDS, by step).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "cli/args.hpp"
+#include "dds/inbox.hpp"
+
+namespace entourage {
+namespace {
+
+TEST(Args, ParsesOptionsFlagsAndPositionals) {
+  std::string scenario;
+  std::string out = "default";
+  double duration = -1.0;
+  int domain = 0;
+  std::uint64_t seed = 0;
+  bool quiet = false;
+  cli::Args a("prog", "summary");
+  a.positional("SCENARIO", "file", &scenario);
+  a.option("out", "FILE", "output", &out);
+  a.option("duration", "S", "duration", &duration);
+  a.option("domain", "ID", "domain", &domain);
+  a.option("seed", "N", "seed", &seed);
+  a.flag("quiet", "quiet", &quiet);
+  ASSERT_TRUE(a.parse({"x.pbtxt", "--duration", "12.5", "--domain=7", "--seed", "42", "--quiet"})) << a.error();
+  EXPECT_EQ(scenario, "x.pbtxt");
+  EXPECT_EQ(out, "default");
+  EXPECT_DOUBLE_EQ(duration, 12.5);
+  EXPECT_EQ(domain, 7);
+  EXPECT_EQ(seed, 42U);
+  EXPECT_TRUE(quiet);
+  EXPECT_TRUE(a.was_set("seed"));
+  EXPECT_FALSE(a.was_set("out"));
+}
+
+TEST(Args, NamesWhatIsWrong) {
+  std::string s;
+  int n = 0;
+  std::uint64_t seed = 0;
+  cli::Args a("prog", "summary");
+  a.positional("FILE", "file", &s);
+  a.option("count", "N", "count", &n);
+  a.option("seed", "N", "seed", &seed);
+  EXPECT_FALSE(a.parse({"f", "--count", "3x"}));
+  EXPECT_NE(a.error().find("--count"), std::string::npos);
+  cli::Args b("prog", "summary");
+  b.positional("FILE", "file", &s);
+  EXPECT_FALSE(b.parse({"--nope"}));
+  EXPECT_NE(b.error().find("unknown option --nope"), std::string::npos);
+  cli::Args c("prog", "summary");
+  c.positional("FILE", "file", &s);
+  EXPECT_FALSE(c.parse({}));
+  EXPECT_NE(c.error().find("missing FILE"), std::string::npos);
+  cli::Args d("prog", "summary");
+  d.option("seed", "N", "seed", &seed);
+  EXPECT_FALSE(d.parse({"--seed", "-3"}));
+}
+
+dds::SampleLimits limits() {
+  dds::SampleLimits l;
+  l.lanes_forward = 2;
+  l.lanes_backward = 2;
+  l.vehicle_types = 1;
+  return l;
+}
+
+msg::VehicleState vehicle(std::uint32_t id, std::uint64_t step, ServiceId owner) {
+  msg::VehicleState m;
+  m.id(id);
+  m.step(step);
+  m.owner(owner.code());
+  m.direction(1);
+  m.length_m(4.5);
+  m.width_m(1.8);
+  m.speed_mps(30.0);
+  return m;
+}
+
+constexpr ServiceId kEgo{Role::kEgo, 0};
+constexpr ServiceId kMicro{Role::kMicro, 0};
+constexpr ServiceId kMeso{Role::kMeso, 0};
+
+TEST(Inbox, AStepIsCompleteWhenEverythingAnnouncedHasArrived) {
+  dds::Inbox in({kEgo, kMicro, kMeso}, kMicro, limits());
+  dds::TopicCounts two{};
+  two[static_cast<std::size_t>(dds::Topic::kVehicleState)] = 2;
+  const dds::TopicMask mask = dds::mask_of(dds::Topic::kVehicleState);
+  in.add(dds::make_step_done(kEgo, 3, {}, 0));
+  in.add(dds::make_step_done(kMeso, 3, two, 2));
+  EXPECT_FALSE(in.complete(3, mask));
+  in.add(vehicle(1, 3, kMeso));
+  in.add(vehicle(2, 3, kMeso));
+  EXPECT_TRUE(in.complete(3, mask));
+  EXPECT_EQ(in.take(3).vehicles.size(), 2U);
+  EXPECT_TRUE(in.take(3).vehicles.empty());  // taken once
+}
+
+TEST(Inbox, OwnSamplesAreIgnored) {
+  dds::Inbox in({kEgo, kMicro}, kMicro, limits());
+  in.add(vehicle(1, 0, kMicro));
+  EXPECT_TRUE(in.take(0).vehicles.empty());
+}
+
+TEST(Inbox, BadSamplesAreCountedDroppedAndStillCompleteTheStep) {
+  dds::Inbox in({kEgo, kMeso}, kEgo, limits());
+  dds::TopicCounts one{};
+  one[static_cast<std::size_t>(dds::Topic::kVehicleState)] = 1;
+  in.add(dds::make_step_done(kMeso, 5, one, 1));
+  msg::VehicleState bad = vehicle(9, 5, kMeso);
+  bad.s_m(std::numeric_limits<double>::quiet_NaN());
+  in.add(bad);
+  EXPECT_EQ(in.bad_samples(), 1U);
+  EXPECT_TRUE(in.complete(5, dds::mask_of(dds::Topic::kVehicleState)));  // a bad sample does not stall lockstep
+  EXPECT_TRUE(in.take(5).vehicles.empty());
+}
+
+TEST(Inbox, TheRecorderKeepsBadSamples) {
+  dds::Inbox in({kEgo, kMeso}, ServiceId{Role::kRecorder, 0}, limits(), /*keep_refused=*/true);
+  msg::VehicleState bad = vehicle(9, 5, kMeso);
+  bad.lane(7);
+  in.add(bad);
+  EXPECT_EQ(in.bad_samples(), 1U);
+  EXPECT_EQ(in.take(5).vehicles.size(), 1U);
+}
+
+TEST(Inbox, LateHandoffsAreNeverDropped) {
+  dds::Inbox in({kEgo, kMeso}, kMicro, limits());
+  msg::Handoff h;
+  h.vehicle_id(4);
+  h.handoff_sequence(2);
+  h.step(2);
+  h.from_service(kMeso.code());
+  h.direction(1);
+  h.length_m(4.5);
+  h.width_m(1.8);
+  h.driver().desired_speed_mps(30.0);
+  h.driver().time_gap_s(1.5);
+  h.driver().max_accel_mps2(1.0);
+  h.driver().comfort_decel_mps2(1.5);
+  in.add(h);
+  in.forget_before(10);  // step 2 is long gone, but the handoff is kept
+  const auto late = in.take_handoffs_upto(10);
+  ASSERT_EQ(late.size(), 1U);
+  EXPECT_EQ(late[0].vehicle_id(), 4U);
+}
+
+}  // namespace
+}  // namespace entourage

@@ -1,0 +1,107 @@
+// The ego stand-in's drivers and the director's trigger points.
+#include <gtest/gtest.h>
+
+#include "core_test_util.hpp"
+#include "director/core/director_core.hpp"
+#include "ego/core/ego_core.hpp"
+
+namespace entourage {
+namespace {
+
+using entourage::testing::minimal_scenario;
+
+ObservedVehicle stopped_car(double s, int lane = 0) {
+  ObservedVehicle o;
+  o.id = 7;
+  o.s_m = s;
+  o.lane = o.target_lane = lane;
+  o.length_m = 4.5;
+  return o;
+}
+
+TEST(EgoCore, AnIdmDriverReachesItsDesiredSpeedOnAFreeRoad) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.ego.start_speed_mps = 10.0;
+  ego::EgoCore core(sc);
+  EgoObservation e = core.initial();
+  EXPECT_DOUBLE_EQ(e.speed_mps, 10.0);
+  for (Step k = 1; k <= 1200; ++k) e = core.step(k, {});
+  EXPECT_NEAR(e.speed_mps, sc.ego.driver.desired_speed_mps, 0.5);
+  EXPECT_EQ(e.step, 1200U);
+  EXPECT_NEAR(e.time_s, 120.0, 1e-9);
+}
+
+TEST(EgoCore, StopsBehindAStoppedCarWhenItCannotChangeLane) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.ego.driver.lane_changes = false;
+  ego::EgoCore core(sc);
+  EgoObservation e = core.initial();
+  const ObservedVehicle blocker = stopped_car(sc.ego.start_s_m + 500.0);
+  for (Step k = 1; k <= 1200; ++k) e = core.step(k, {blocker});
+  EXPECT_LT(e.speed_mps, 0.1);
+  EXPECT_LT(e.s_m, blocker.s_m - 0.5 * (4.5 + e.length_m));
+  EXPECT_GT(e.s_m, blocker.s_m - 20.0);  // and not miles before it
+}
+
+TEST(EgoCore, ChangesLaneAroundAStoppedCarWhenItMay) {
+  ScenarioConfig sc = minimal_scenario();
+  ego::EgoCore core(sc);
+  EgoObservation e = core.initial();
+  const ObservedVehicle blocker = stopped_car(sc.ego.start_s_m + 300.0);
+  bool changed = false;
+  for (Step k = 1; k <= 600; ++k) {
+    e = core.step(k, {blocker});
+    changed = changed || e.target_lane == 1 || e.lane == 1;
+  }
+  EXPECT_TRUE(changed);
+  EXPECT_GT(e.s_m, blocker.s_m);
+}
+
+TEST(EgoCore, FollowsASpeedProfile) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.ego.driver.use_speed_profile = true;
+  sc.ego.driver.profile = {{0.0, 20.0}, {1500.0, 20.0}, {1600.0, 10.0}, {9000.0, 10.0}};
+  ego::EgoCore core(sc);
+  EgoObservation e = core.initial();
+  EXPECT_DOUBLE_EQ(e.speed_mps, 20.0);
+  for (Step k = 1; k <= 1500 && e.s_m < 2200.0; ++k) e = core.step(k, {});
+  EXPECT_NEAR(e.speed_mps, 10.0, 0.3);
+}
+
+TEST(EgoCore, KnowsWhenTheRoadEnds) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.ego.start_s_m = sc.road.length_m - sc.window.inner_ahead_m - sc.window.outer_ahead_m - 10.0;
+  ego::EgoCore core(sc);
+  EXPECT_FALSE(core.at_road_end());
+  for (Step k = 1; k <= 20; ++k) core.step(k, {});
+  EXPECT_TRUE(core.at_road_end());
+}
+
+TEST(DirectorCore, ReportsEveryPlayFirstThenItsTriggerPoints) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.plays = {{1, "brake", 2000.0, 2600.0}, {2, "cut-in", 5000.0, 5500.0}};
+  director::DirectorCore core(sc);
+  EgoObservation ego = testing::ego_at(0, 1000.0, 30.0);
+  auto r = core.step(ego);
+  ASSERT_EQ(r.size(), 2U);
+  EXPECT_EQ(r[0].phase, director::PlayPhase::kWaiting);
+  ego = testing::ego_at(1, 1001.0, 30.0);
+  EXPECT_TRUE(core.step(ego).empty());  // nothing changed
+  ego = testing::ego_at(40, 2000.0, 30.0);
+  r = core.step(ego);
+  ASSERT_EQ(r.size(), 1U);
+  EXPECT_EQ(r[0].phase, director::PlayPhase::kPreparing);
+  EXPECT_NEAR(r[0].estimated_start_time_s, 4.0 + 600.0 / 30.0, 1e-9);  // at 30 m/s, 600 m to go
+  ego = testing::ego_at(41, 2003.0, 20.0);  // the driver slows down: the estimate moves
+  r = core.step(ego);
+  ASSERT_EQ(r.size(), 1U);
+  EXPECT_NEAR(r[0].estimated_start_time_s, 4.1 + 597.0 / 20.0, 1e-9);
+  ego = testing::ego_at(80, 2600.0, 20.0);
+  r = core.step(ego);
+  ASSERT_EQ(r.size(), 1U);
+  EXPECT_EQ(r[0].phase, director::PlayPhase::kFailed);
+  EXPECT_NE(r[0].detail.find("not built"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace entourage
