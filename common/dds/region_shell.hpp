@@ -15,6 +15,7 @@
 #include "dds/inbox.hpp"
 #include "dds/node.hpp"
 #include "dds/runtime.hpp"
+#include "dds/shell.hpp"
 #include "road/road.hpp"
 #include "traffic/step_io.hpp"
 
@@ -79,25 +80,18 @@ class RegionPublisher {
   std::vector<ObservedVehicle> own_;
 };
 
-// Subscribes an inbox to the topics a service of `role` reads.
-void subscribe(Node& node, Inbox& inbox, Role role);
-
 template <class Core>
 int run_region_service(const ServiceContext& ctx, Core& core) {
   const ScenarioConfig& sc = ctx.scenario.config;
   const Road road(sc.road);
-  Inbox inbox(ctx.options.peer_ids, ctx.id, SampleLimits::of(sc));
-  Node node(ctx.options.domain, ctx.options.qos_file, to_string(ctx.id));
-  subscribe(node, inbox, ctx.id.role);
-  RegionPublisher publisher(node, ctx.id, road);
-  const auto done = node.writer<msg::StepDonePubSubType>(Topic::kStepDone);
-  StatusReporter status(node, ctx.id);
-  if (!wait_for_discovery(node, ctx.id, ctx.options.peer_ids, status, ctx.options.discovery_timeout_s)) return 1;
+  Shell shell(ctx);
+  RegionPublisher publisher(shell.node, ctx.id, road);
+  if (!shell.discover(ctx)) return 1;
   run_step_loop(
-      ctx, inbox, done, status,
+      ctx, shell.inbox, shell.done, shell.status,
       [&](Step k) {
-        const StepOutput out = core.step(gather_inputs(k, inbox, publisher.own()));
-        status.set_counters(inbox.bad_samples(), core.counters().duplicate_handoffs);
+        const StepOutput out = core.step(gather_inputs(k, shell.inbox, publisher.own()));
+        shell.status.set_counters(shell.inbox.bad_samples(), core.counters().duplicate_handoffs);
         return publisher.publish(k, static_cast<double>(k) * sc.step_s, out);
       },
       [&] { return static_cast<std::uint32_t>(core.fleet().size()); });

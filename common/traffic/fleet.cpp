@@ -28,6 +28,16 @@ bool Fleet::owns(VehicleId id) const {
   return std::binary_search(vehicles_.begin(), vehicles_.end(), probe, by_id);
 }
 
+std::size_t adopt_handoffs(Fleet& fleet, HandoffInbox& inbox, std::vector<Handoff> handoffs, Step step, double dt_s) {
+  const Step last = step == 0 ? 0 : step - 1;
+  std::size_t n = 0;
+  for (const Handoff& h : inbox.accept(std::move(handoffs))) {
+    fleet.adopt(h, last, dt_s);
+    ++n;
+  }
+  return n;
+}
+
 void build_index(LaneIndex& index, const Fleet& fleet, const std::vector<ObservedVehicle>& world,
                  const EgoObservation* ego) {
   index.clear();

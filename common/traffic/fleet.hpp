@@ -35,6 +35,10 @@ class Fleet {
   std::vector<Vehicle> vehicles_;
 };
 
+// Applies the handoffs addressed to `inbox`'s service (each exactly once) to the fleet, the state
+// each carries brought forward to the step before `step` if it is late; returns how many joined.
+std::size_t adopt_handoffs(Fleet& fleet, HandoffInbox& inbox, std::vector<Handoff> handoffs, Step step, double dt_s);
+
 // Fills `index` with the fleet, every vehicle of the world that the fleet does not own (the
 // world's copy of owned vehicles is the fleet's own state), and the ego.
 void build_index(LaneIndex& index, const Fleet& fleet, const std::vector<ObservedVehicle>& world,

@@ -25,28 +25,23 @@ msg::PlayStatus to_msg(const director::PlayReport& r, Step k, double time_s) {
 }
 
 int run(const dds::ServiceContext& ctx) {
-  const ScenarioConfig& sc = ctx.scenario.config;
-  dds::Inbox inbox(ctx.options.peer_ids, ctx.id, dds::SampleLimits::of(sc));
-  dds::Node node(ctx.options.domain, ctx.options.qos_file, to_string(ctx.id));
-  dds::subscribe(node, inbox, ctx.id.role);
-  const auto plays = node.writer<msg::PlayStatusPubSubType>(dds::Topic::kPlayStatus);
-  const auto done = node.writer<msg::StepDonePubSubType>(dds::Topic::kStepDone);
-  dds::StatusReporter status(node, ctx.id);
-  if (!dds::wait_for_discovery(node, ctx.id, ctx.options.peer_ids, status, ctx.options.discovery_timeout_s)) return 1;
+  dds::Shell shell(ctx);
+  const auto plays = shell.node.writer<msg::PlayStatusPubSubType>(dds::Topic::kPlayStatus);
+  if (!shell.discover(ctx)) return 1;
 
-  director::DirectorCore core(sc);
+  director::DirectorCore core(ctx.scenario.config);
   dds::run_step_loop(
-      ctx, inbox, done, status,
+      ctx, shell.inbox, shell.done, shell.status,
       [&](Step k) {
-        const EgoObservation ego = dds::from_msg(*inbox.ego(k));
-        if (k > 0) inbox.take(k - 1);
+        const EgoObservation ego = dds::from_msg(*shell.inbox.ego(k));
+        if (k > 0) shell.inbox.take(k - 1);
         dds::TopicCounts written{};
         for (const auto& r : core.step(ego)) {
           plays.write(to_msg(r, k, ego.time_s));
           if (!r.detail.empty()) spdlog::info("play \"{}\": {}: {}", r.name, director::to_string(r.phase), r.detail);
           ++written[static_cast<std::size_t>(dds::Topic::kPlayStatus)];
         }
-        status.set_counters(inbox.bad_samples(), 0);
+        shell.status.set_counters(shell.inbox.bad_samples(), 0);
         return written;
       },
       [] { return 0U; });

@@ -49,13 +49,12 @@ int run(const dds::ServiceContext& ctx, const EgoOptions& eo) {
   const Road road(sc.road);
   const bool lockstep = ctx.options.time_mode == dds::TimeMode::kLockstep;
   const dds::TopicMask needed = dds::needed_topics(Role::kEgo);
-  dds::Inbox inbox(ctx.options.peer_ids, ctx.id, dds::SampleLimits::of(sc));
-  dds::Node node(ctx.options.domain, ctx.options.qos_file, to_string(ctx.id));
-  dds::subscribe(node, inbox, ctx.id.role);
-  const auto egos = node.writer<msg::EgoStatePubSubType>(dds::Topic::kEgoState);
-  const auto done = node.writer<msg::StepDonePubSubType>(dds::Topic::kStepDone);
-  dds::StatusReporter status(node, ctx.id);
-  if (!dds::wait_for_discovery(node, ctx.id, ctx.options.peer_ids, status, ctx.options.discovery_timeout_s)) return 1;
+  dds::Shell shell(ctx);
+  const auto egos = shell.node.writer<msg::EgoStatePubSubType>(dds::Topic::kEgoState);
+  if (!shell.discover(ctx)) return 1;
+  dds::Inbox& inbox = shell.inbox;
+  dds::StatusReporter& status = shell.status;
+  const auto& done = shell.done;
   if (!wait_for_peers_ready(inbox, ctx, status)) return dds::shutdown_requested() ? 0 : 1;
 
   ego::EgoCore core(sc);

@@ -10,22 +10,18 @@ namespace {
 int run(const dds::ServiceContext& ctx) {
   const ScenarioConfig& sc = ctx.scenario.config;
   const Road road(sc.road);
-  dds::Inbox inbox(ctx.options.peer_ids, ctx.id, dds::SampleLimits::of(sc));
-  dds::Node node(ctx.options.domain, ctx.options.qos_file, to_string(ctx.id));
-  dds::subscribe(node, inbox, ctx.id.role);
-  dds::RegionPublisher publisher(node, ctx.id, road);
-  const auto done = node.writer<msg::StepDonePubSubType>(dds::Topic::kStepDone);
-  dds::StatusReporter status(node, ctx.id);
+  dds::Shell shell(ctx);
+  dds::RegionPublisher publisher(shell.node, ctx.id, road);
   // Observing the demand's stream takes a second or two: done before reporting ready.
   generator::GeneratorCore core(sc, Random::derived(ctx.seed, static_cast<std::uint64_t>(Role::kGenerator)).next_u64());
-  if (!dds::wait_for_discovery(node, ctx.id, ctx.options.peer_ids, status, ctx.options.discovery_timeout_s)) return 1;
+  if (!shell.discover(ctx)) return 1;
 
   dds::run_step_loop(
-      ctx, inbox, done, status,
+      ctx, shell.inbox, shell.done, shell.status,
       [&](Step k) {
-        const StepOutput out = core.step(dds::gather_inputs(k, inbox, publisher.own()));
-        status.set_counters(inbox.bad_samples(), 0);
-        status.set_detail("queued at the edges: " + std::to_string(core.queued()));
+        const StepOutput out = core.step(dds::gather_inputs(k, shell.inbox, publisher.own()));
+        shell.status.set_counters(shell.inbox.bad_samples(), 0);
+        shell.status.set_detail("queued at the edges: " + std::to_string(core.queued()));
         return publisher.publish(k, static_cast<double>(k) * sc.step_s, out);
       },
       [&core] { return static_cast<std::uint32_t>(core.front_zone().size()); });

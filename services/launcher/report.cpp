@@ -45,13 +45,17 @@ void print_flow(const char* what, const recording::FlowMeasurement& f, std::ostr
 
 bool print_report(const ReportInput& in, std::ostream& out) {
   std::string error;
-  auto rec = recording::read_recording(in.recording, &error);
+  const auto rec = recording::read_recording(in.recording, &error);
   if (!rec) {
     out << "entourage: cannot read the recording: " << error << "\n";
     return false;
   }
-  const auto tables = recording::tables_from(*rec, type_names(in.scenario));
-  const auto s = recording::summarize(*rec, tables, in.scenario);
+  return print_report(in, *rec, out);
+}
+
+bool print_report(const ReportInput& in, const recording::Recording& rec, std::ostream& out) {
+  const auto tables = recording::tables_from(rec, type_names(in.scenario));
+  const auto s = recording::summarize(rec, tables, in.scenario);
   out << "summary:\n";
   out << "  simulated " << f1(s.simulated_s) << " s (" << s.steps << " steps)";
   if (in.wall_s > 0.0) {
@@ -83,8 +87,8 @@ bool print_report(const ReportInput& in, std::ostream& out) {
     out << "    " << (c.passed ? "ok     " : "FAILED ") << c.name << ": " << c.detail << "\n";
     all_ok = all_ok && c.passed;
   }
-  if (rec->undecodable > 0) out << "  " << rec->undecodable << " recorded messages could not be decoded\n";
-  out << "  recording: " << in.recording << " (" << rec->vehicles.size() + rec->egos.size() + rec->handoffs.size()
+  if (rec.undecodable > 0) out << "  " << rec.undecodable << " recorded messages could not be decoded\n";
+  out << "  recording: " << in.recording << " (" << rec.vehicles.size() + rec.egos.size() + rec.handoffs.size()
       << " samples)\n";
   if (!in.logs_dir.empty()) out << "  logs: " << in.logs_dir << "/\n";
   return all_ok;

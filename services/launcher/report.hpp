@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "recording/recording.hpp"
 #include "scenario/config.hpp"
 
 namespace entourage::launcher {
@@ -20,7 +21,9 @@ struct ReportInput {
   std::vector<double> latencies_ms;
 };
 
-// Prints the report; false if the recording cannot be read or an invariant is violated.
+// Prints the report of a recording; false if an invariant is violated.
+bool print_report(const ReportInput& in, const recording::Recording& rec, std::ostream& out);
+// Reads in.recording and prints its report; false if it cannot be read or an invariant is violated.
 bool print_report(const ReportInput& in, std::ostream& out);
 
 }  // namespace entourage::launcher

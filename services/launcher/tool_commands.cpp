@@ -43,6 +43,24 @@ std::vector<std::string> type_names(const ScenarioConfig& sc) {
   return names;
 }
 
+struct Opened {
+  recording::Recording recording;
+  ScenarioConfig scenario;
+};
+
+// Reads a recording and the scenario it was made with; prints what is wrong and returns nullopt.
+std::optional<Opened> open_recording(const std::string& path, const char* command) {
+  std::string error;
+  auto rec = recording::read_recording(path, &error);
+  if (!rec) {
+    std::cerr << "entourage " << command << ": " << error << "\n";
+    return std::nullopt;
+  }
+  auto sc = recorded_scenario(*rec, path);
+  if (!sc) return std::nullopt;
+  return Opened{std::move(*rec), std::move(*sc)};
+}
+
 }  // namespace
 
 int check_command(int argc, char** argv) {
@@ -76,21 +94,17 @@ int export_command(int argc, char** argv) {
     std::cerr << "entourage export: --csv DIR is required\n";
     return 2;
   }
+  const auto opened = open_recording(path, "export");
+  if (!opened) return 1;
+  const recording::Recording& rec = opened->recording;
+  const auto tables = recording::tables_from(rec, type_names(opened->scenario));
   std::string error;
-  const auto rec = recording::read_recording(path, &error);
-  if (!rec) {
-    std::cerr << "entourage export: " << error << "\n";
-    return 1;
-  }
-  const auto sc = recorded_scenario(*rec, path);
-  if (!sc) return 1;
-  const auto tables = recording::tables_from(*rec, type_names(*sc));
-  if (!recording::write_csv(*rec, tables, dir, &error)) {
+  if (!recording::write_csv(rec, tables, dir, &error)) {
     std::cerr << "entourage export: " << error << "\n";
     return 1;
   }
   std::cout << "wrote " << tables.vehicles.size() << " vehicle rows, " << tables.ego.size() << " ego rows, "
-            << rec->handoffs.size() << " handoffs and " << rec->plays.size() << " play reports to " << dir << "/\n";
+            << rec.handoffs.size() << " handoffs and " << rec.plays.size() << " play reports to " << dir << "/\n";
   return 0;
 }
 
@@ -101,15 +115,9 @@ int verify_command(int argc, char** argv) {
                  "invariant is violated.");
   args.positional("RECORDING", "an MCAP recording made by entourage run", &path);
   if (int rc = parse_or_exit(args, argc, argv, "verify"); rc >= 0) return rc;
-  std::string error;
-  const auto rec = recording::read_recording(path, &error);
-  if (!rec) {
-    std::cerr << "entourage verify: " << error << "\n";
-    return 1;
-  }
-  const auto sc = recorded_scenario(*rec, path);
-  if (!sc) return 1;
-  return print_report({path, "", *sc, 0.0, false, {}}, std::cout) ? 0 : 1;
+  const auto opened = open_recording(path, "verify");
+  if (!opened) return 1;
+  return print_report({path, "", opened->scenario, 0.0, false, {}}, opened->recording, std::cout) ? 0 : 1;
 }
 
 int models_command(int argc, char** argv) {

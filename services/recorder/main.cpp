@@ -50,12 +50,10 @@ int run(const dds::ServiceContext& ctx, const RecorderOptions& ro) {
     return 1;
   }
 
-  dds::Inbox inbox(ctx.options.peer_ids, ctx.id, dds::SampleLimits::of(sc), /*keep_refused=*/true);
-  dds::Node node(ctx.options.domain, ctx.options.qos_file, to_string(ctx.id));
-  dds::subscribe(node, inbox, ctx.id.role);
-  const auto done = node.writer<msg::StepDonePubSubType>(dds::Topic::kStepDone);
-  dds::StatusReporter status(node, ctx.id);
-  if (!dds::wait_for_discovery(node, ctx.id, ctx.options.peer_ids, status, ctx.options.discovery_timeout_s)) return 1;
+  dds::Shell shell(ctx, /*keep_refused=*/true);
+  if (!shell.discover(ctx)) return 1;
+  dds::Inbox& inbox = shell.inbox;
+  dds::StatusReporter& status = shell.status;
   status.set_state(dds::ServiceState::kRunning);
 
   Step next = 0;
@@ -77,7 +75,7 @@ int run(const dds::ServiceContext& ctx, const RecorderOptions& ro) {
       ++late_writes;
     }
     writer.write_step(collect(inbox, next, sc.step_s));
-    done.write(dds::make_step_done(ctx.id, next, {}, 0));
+    shell.done.write(dds::make_step_done(ctx.id, next, {}, 0));
     status.step_done(next, 0.0, false);
     status.set_counters(inbox.bad_samples(), 0);
     inbox.forget_bookkeeping_before(next);

@@ -48,7 +48,7 @@ std::size_t GeneratorCore::queued() const {
 
 StepOutput GeneratorCore::step(const StepInput& in) {
   StepOutput out;
-  for (const Handoff& h : inbox_.accept(in.handoffs)) zone_.add(h.vehicle);
+  for (const Handoff& h : inbox_.accept(in.handoffs)) zone_.add(h.vehicle);  // left the window ahead
   perceive(in);
   zone_.move(index_, scenario_.step_s);
   index_world(in);

@@ -33,11 +33,7 @@ StepOutput MesoCore::step(const StepInput& in) {
 }
 
 void MesoCore::adopt(const StepInput& in) {
-  const Step last = in.step == 0 ? 0 : in.step - 1;
-  for (const Handoff& h : inbox_.accept(in.handoffs)) {
-    fleet_.adopt(h, last, scenario_.step_s);
-    ++counters_.adopted;
-  }
+  counters_.adopted += adopt_handoffs(fleet_, inbox_, in.handoffs, in.step, scenario_.step_s);
   counters_.duplicate_handoffs = inbox_.duplicates();
 }
 

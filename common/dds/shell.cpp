@@ -1,13 +1,24 @@
+#include "dds/shell.hpp"
+
 #include "entourage_msg/EgoStatePubSubTypes.h"
 #include "entourage_msg/HandoffPubSubTypes.h"
 #include "entourage_msg/PlayStatusPubSubTypes.h"
 #include "entourage_msg/ServiceStatusPubSubTypes.h"
-#include "entourage_msg/StepDonePubSubTypes.h"
 #include "entourage_msg/VehicleStatePubSubTypes.h"
 
-#include "dds/region_shell.hpp"
-
 namespace entourage::dds {
+
+Shell::Shell(const ServiceContext& ctx, bool keep_refused)
+    : inbox(ctx.options.peer_ids, ctx.id, SampleLimits::of(ctx.scenario.config), keep_refused),
+      node(ctx.options.domain, ctx.options.qos_file, to_string(ctx.id)),
+      status(node, ctx.id),
+      done(node.writer<msg::StepDonePubSubType>(Topic::kStepDone)) {
+  subscribe(node, inbox, ctx.id.role);
+}
+
+bool Shell::discover(const ServiceContext& ctx) {
+  return wait_for_discovery(node, ctx.id, ctx.options.peer_ids, status, ctx.options.discovery_timeout_s);
+}
 
 void subscribe(Node& node, Inbox& inbox, Role role) {
   if (reads(role, Topic::kEgoState)) {
