@@ -8,10 +8,10 @@
 namespace entourage::testing {
 namespace {
 
-constexpr int kDomain = 112;
-constexpr int kDomainService = 115;  // a different domain: tests run in parallel and check for leftovers
+constexpr int kDomainService = 115;  // tests run in parallel and check for leftover processes by domain
 
 struct BadCase {
+  int domain;         // each case its own (they run in parallel and check for leftover processes)
   const char* file;
   const char* where;  // file:line the message must name
   const char* what;   // the field (or token) the message must name
@@ -25,7 +25,7 @@ TEST_P(BadScenario, RunRefusesItAndStartsNothing) {
   const BadCase c = GetParam();
   const std::string dir = fresh_dir(std::string("bad_") + c.file);
   const std::string path = source(std::string("tests/scenarios/") + c.file);
-  const CommandResult r = run_command(bin("entourage") + " run " + path + " --domain " + std::to_string(kDomain) +
+  const CommandResult r = run_command(bin("entourage") + " run " + path + " --domain " + std::to_string(c.domain) +
                                       " --record " + dir + "/x.mcap");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find(c.where), std::string::npos) << r.output;
@@ -33,7 +33,7 @@ TEST_P(BadScenario, RunRefusesItAndStartsNothing) {
   EXPECT_NE(r.output.find("no service was started"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.logs")) << "logs were created: something started";
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.mcap"));
-  EXPECT_TRUE(no_process_uses_domain(kDomain));
+  EXPECT_TRUE(no_process_uses_domain(c.domain));
   std::filesystem::remove_all(dir);
 }
 
@@ -55,10 +55,11 @@ TEST_P(BadScenario, AServiceRefusesItAtStartup) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenarios, BadScenario,
-    ::testing::Values(BadCase{"bad_syntax.pbtxt", "bad_syntax.pbtxt:10:", "vehicle_type"},
-                      BadCase{"bad_negative_flow.pbtxt", "bad_negative_flow.pbtxt:18:", "demand.forward.flow_veh_per_h"},
-                      BadCase{"bad_zero_lanes.pbtxt", "bad_zero_lanes.pbtxt:6:", "road.lanes_forward"},
-                      BadCase{"bad_unknown_model.pbtxt", "bad_unknown_model.pbtxt:13:",
+    ::testing::Values(BadCase{116, "bad_syntax.pbtxt", "bad_syntax.pbtxt:10:", "vehicle_type"},
+                      BadCase{117, "bad_negative_flow.pbtxt", "bad_negative_flow.pbtxt:18:",
+                              "demand.forward.flow_veh_per_h"},
+                      BadCase{118, "bad_zero_lanes.pbtxt", "bad_zero_lanes.pbtxt:6:", "road.lanes_forward"},
+                      BadCase{119, "bad_unknown_model.pbtxt", "bad_unknown_model.pbtxt:13:",
                               "vehicle_type[0].driver.car_following"}),
     [](const ::testing::TestParamInfo<BadCase>& param) {
       std::string n = param.param.file;
