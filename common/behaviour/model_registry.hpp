@@ -12,11 +12,12 @@ namespace entourage {
 enum class LaneChangeModel : std::uint8_t {
   kNone = 0,   // never changes lane
   kMobil = 1,  // Kesting et al. 2007
+  kOvertaking = 2,  // two-lane roads: passes in the oncoming lane (behaviour/overtaking.hpp)
 };
 
 struct ModelInfo {
   std::string_view name;
-  std::string_view kind;  // "car_following" or "lane_change"
+  std::string_view kind;  // "car_following", "lane_change" or "wrapper"
   std::string_view description;
 };
 

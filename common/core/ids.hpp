@@ -13,6 +13,8 @@ using Step = std::uint64_t;
 
 // The ego carries this id when it appears among the neighbours of simulated vehicles.
 inline constexpr VehicleId kEgoVehicleId = 0;
+// No vehicle has this id (a vehicle not placed yet, or a query that skips nobody).
+inline constexpr VehicleId kNoVehicle = 0xFFFFFFFFu;
 // Ids from the generator start at 1; ids created by the director start here.
 inline constexpr VehicleId kDirectorFirstVehicleId = 0x80000000u;
 

@@ -20,7 +20,8 @@ bool all_finite(std::initializer_list<double> xs) {
 
 std::optional<std::string> check_lane(int direction, int lane, int target_lane, const SampleLimits& l) {
   if (direction != 1 && direction != -1) return "direction " + std::to_string(direction) + " is not +1 or -1";
-  const int lanes = direction == 1 ? l.lanes_forward : l.lanes_backward;
+  const int own = direction == 1 ? l.lanes_forward : l.lanes_backward;
+  const int lanes = l.two_way ? l.lanes_forward + l.lanes_backward : own;
   if (lane < 0 || lane >= lanes) return "lane " + std::to_string(lane) + " does not exist";
   if (target_lane < 0 || target_lane >= lanes) return "target lane " + std::to_string(target_lane) + " does not exist";
   return std::nullopt;
@@ -146,12 +147,18 @@ Handoff from_msg(const msg::Handoff& m) {
   p.car_following.idm = {d.desired_speed_mps(), d.time_gap_s(), d.max_accel_mps2(), d.comfort_decel_mps2(),
                          d.min_gap_m(), d.accel_exponent()};
   p.car_following.beta = d.beta();
+  p.car_following.gipps = {d.gipps_reaction_time_s(), d.gipps_max_decel_mps2(), d.gipps_leader_decel_estimate_mps2()};
+  p.car_following.human_driver = d.human_driver();
+  p.car_following.hdm = {d.hdm_reaction_time_s(), d.hdm_anticipated_leaders(), d.hdm_distance_error(),
+                         d.hdm_inverse_ttc_error_per_s(), d.hdm_error_persistence_s()};
   p.mobil = {d.politeness(), d.change_threshold_mps2(), d.right_bias_mps2(), d.safe_decel_mps2()};
   p.max_decel_mps2 = d.max_decel_mps2();
   p.lane_change_duration_s = d.lane_change_duration_s();
-  p.desired_speed_factor = d.desired_speed_factor();
+  p.desired_speed_median_mps = d.desired_speed_median_mps();
   p.keep_right = d.keep_right();
   p.rng_state = d.rng_state();
+  v.hdm_errors = {d.hdm_w_distance(), d.hdm_w_approach()};
+  v.requested_lane = m.requested_lane();
   h.step = m.step();
   h.from = ServiceId::from_code(m.from_service());
   h.to_role = static_cast<Role>(m.to_role());
@@ -192,7 +199,7 @@ msg::Handoff to_msg(const Handoff& h, double time_s, const Road& road) {
   d.car_following_model(static_cast<uint8_t>(p.car_following.model));
   d.lane_change_model(static_cast<uint8_t>(p.lane_change));
   d.desired_speed_mps(p.car_following.idm.desired_speed_mps);
-  d.desired_speed_factor(p.desired_speed_factor);
+  d.desired_speed_median_mps(p.desired_speed_median_mps);
   d.time_gap_s(p.car_following.idm.time_gap_s);
   d.max_accel_mps2(p.car_following.idm.max_accel_mps2);
   d.comfort_decel_mps2(p.car_following.idm.comfort_decel_mps2);
@@ -207,6 +214,18 @@ msg::Handoff to_msg(const Handoff& h, double time_s, const Road& road) {
   d.lane_change_duration_s(p.lane_change_duration_s);
   d.keep_right(p.keep_right);
   d.rng_state(p.rng_state);
+  d.gipps_reaction_time_s(p.car_following.gipps.reaction_time_s);
+  d.gipps_max_decel_mps2(p.car_following.gipps.max_decel_mps2);
+  d.gipps_leader_decel_estimate_mps2(p.car_following.gipps.leader_decel_estimate_mps2);
+  d.human_driver(p.car_following.human_driver);
+  d.hdm_reaction_time_s(p.car_following.hdm.reaction_time_s);
+  d.hdm_anticipated_leaders(static_cast<int16_t>(p.car_following.hdm.anticipated_leaders));
+  d.hdm_distance_error(p.car_following.hdm.distance_error);
+  d.hdm_inverse_ttc_error_per_s(p.car_following.hdm.inverse_ttc_error_per_s);
+  d.hdm_error_persistence_s(p.car_following.hdm.error_persistence_s);
+  d.hdm_w_distance(v.hdm_errors.w_distance);
+  d.hdm_w_approach(v.hdm_errors.w_approach);
+  m.requested_lane(static_cast<int16_t>(v.requested_lane));
   return m;
 }
 
@@ -236,6 +255,7 @@ SampleLimits SampleLimits::of(const ScenarioConfig& sc) {
   l.lanes_forward = sc.road.lanes_forward;
   l.lanes_backward = sc.road.lanes_backward;
   l.vehicle_types = static_cast<int>(sc.vehicle_types.size());
+  l.two_way = sc.road.kind == RoadKind::kRural;
   return l;
 }
 

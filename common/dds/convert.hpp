@@ -37,6 +37,7 @@ struct SampleLimits {
   int lanes_forward = 0;
   int lanes_backward = 0;
   int vehicle_types = 0;
+  bool two_way = false;  // a vehicle may be in the oncoming lanes (overtaking on a rural road)
   double max_speed_mps = 100.0;
   double max_abs_accel_mps2 = 30.0;
 

@@ -31,7 +31,8 @@ class Road {
   int lanes(Direction dir) const { return config_.lanes(dir); }
   double lane_width_m() const { return config_.lane_width_m; }
 
-  // Lateral offset of a lane's centre line.
+  // Lateral offset of a lane's centre line; lanes >= lanes(dir) are the oncoming carriageway's
+  // (lane lanes(dir) + j is the opposite direction's lane lanes(opp) - 1 - j).
   double lane_center_d(Direction dir, int lane) const;
   // The lane whose band contains d (clamped to the direction's lanes).
   int lane_at(Direction dir, double d_m) const;

@@ -7,6 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "behaviour/hdm_params.hpp"
+#include "behaviour/overtaking.hpp"
+#include "behaviour/speed_adaptation.hpp"
 #include "core/ids.hpp"
 
 namespace entourage {
@@ -29,6 +32,26 @@ struct SpeedZoneConfig {
   double limit_mps = 0.0;
 };
 
+// A stretch where drivers of the given directions do not start overtakings (e.g. a solid centre
+// line). On a rural road the oncoming lane is used only outside such zones.
+struct OvertakingRestrictionConfig {
+  double start_m = 0.0;
+  double end_m = 0.0;
+  bool forward = true;
+  bool backward = true;
+
+  bool applies_to(Direction d) const { return d == Direction::kForward ? forward : backward; }
+};
+
+// A lane that is closed over [start_m, end_m] (road works, a lane drop): its drivers must change
+// lane before they reach it, and nobody changes into it.
+struct LaneClosureConfig {
+  Direction direction = Direction::kForward;
+  int lane = 0;
+  double start_m = 0.0;
+  double end_m = 0.0;
+};
+
 enum class RoadKind { kFreeway, kRural };
 
 struct RoadConfig {
@@ -41,6 +64,11 @@ struct RoadConfig {
   double speed_limit_mps = 0.0;
   std::vector<SegmentConfig> segments;
   std::vector<SpeedZoneConfig> speed_zones;
+  std::vector<OvertakingRestrictionConfig> no_overtaking;
+  std::vector<LaneClosureConfig> lane_closures;
+  // Lateral clearance from the inside of a curve to what blocks the view (trees, cuttings): sets
+  // the sight distance in curves, sqrt(8 R clearance).
+  double sight_clearance_m = 5.0;
 
   int lanes(Direction d) const { return d == Direction::kForward ? lanes_forward : lanes_backward; }
 };
@@ -69,6 +97,16 @@ struct DriverPopulation {
   double right_bias_mps2 = 0.3;
   double safe_decel_mps2 = 4.0;
   NormalDist lane_change_duration_s;
+  // Gipps (behaviour/gipps.hpp): reaction time and braking drawn per driver.
+  NormalDist gipps_reaction_time_s;
+  NormalDist gipps_max_decel_mps2;
+  double gipps_leader_decel_estimate_mps2 = 3.0;
+  // The Human Driver Model around the car-following model (behaviour/hdm.hpp): on when the
+  // scenario gives the type a human_driver block. The reaction time is drawn per driver; the
+  // other parameters are the type's.
+  bool human_driver = false;
+  NormalDist hdm_reaction_time_s;
+  HdmParams hdm;
 };
 
 struct VehicleTypeConfig {
@@ -125,6 +163,8 @@ struct ScenarioConfig {
   FlowConfig backward;
   EgoConfig ego;
   std::vector<PlayConfig> plays;
+  SpeedAdaptationParams speed_adaptation;
+  OvertakingParams overtaking;
 
   const FlowConfig& flow(Direction d) const { return d == Direction::kForward ? forward : backward; }
   std::uint64_t steps() const;  // number of steps in duration_s

@@ -1,5 +1,6 @@
 #include "scenario/resolve.hpp"
 
+#include "behaviour/gipps.hpp"
 #include "core/units.hpp"
 #include "scenario/scenario.pb.h"
 
@@ -14,6 +15,9 @@ constexpr double kDefaultComfortDecel_mps2 = 1.5;
 constexpr double kDefaultMinGap_m = 2.0;
 constexpr double kDefaultPoliteness = 0.2;
 constexpr double kDefaultLaneChangeDuration_s = 4.0;
+// Defaults of the Gipps and HDM parameters drawn per driver (the structs' defaults).
+const GippsParams kDefaultGipps{};
+const HdmParams kDefaultHdm{};
 
 NormalDist to_dist(const Normal& n, double scale = 1.0) {
   NormalDist d;
@@ -46,6 +50,60 @@ DriverPopulation resolve_driver(const Driver& d) {
   p.safe_decel_mps2 = d.safe_decel_mps2();
   p.lane_change_duration_s =
       dist_or(d.has_lane_change_duration_s(), d.lane_change_duration_s(), kDefaultLaneChangeDuration_s);
+  const Gipps& g = d.gipps();
+  p.gipps_reaction_time_s = dist_or(g.has_reaction_time_s(), g.reaction_time_s(), kDefaultGipps.reaction_time_s);
+  p.gipps_max_decel_mps2 = dist_or(g.has_max_decel_mps2(), g.max_decel_mps2(), kDefaultGipps.max_decel_mps2);
+  p.gipps_leader_decel_estimate_mps2 = g.leader_decel_estimate_mps2();
+  p.human_driver = d.has_human_driver();
+  const HumanDriver& h = d.human_driver();
+  p.hdm_reaction_time_s = dist_or(h.has_reaction_time_s(), h.reaction_time_s(), kDefaultHdm.reaction_time_s);
+  p.hdm.anticipated_leaders = h.anticipated_leaders();
+  p.hdm.distance_error = h.distance_error();
+  p.hdm.inverse_ttc_error_per_s = h.inverse_ttc_error_per_s();
+  p.hdm.error_persistence_s = h.error_persistence_s();
+  p.hdm.reaction_time_s = p.hdm_reaction_time_s.mean;
+  return p;
+}
+
+Direction direction_of(Directions d) { return d == BACKWARD ? Direction::kBackward : Direction::kForward; }
+
+SpeedAdaptationParams resolve_speed_adaptation(const SpeedAdaptation& a) {
+  SpeedAdaptationParams p;
+  p.limit_rotation = a.limit_rotation();
+  p.curve_lateral_accel_mps2 = a.curve_lateral_accel_mps2();
+  p.curve_rotation = a.curve_rotation();
+  p.reference_lane_width_m = a.reference_lane_width_m();
+  p.width_reduction_per_m = a.width_reduction_per_m();
+  p.width_rotation = a.width_rotation();
+  p.approach_decel_mps2 = a.approach_decel_mps2();
+  return p;
+}
+
+AcceptanceCurve resolve_curve(const google::protobuf::RepeatedPtrField<GapProbability>& points,
+                              const AcceptanceCurve& fallback) {
+  if (points.empty()) return fallback;
+  AcceptanceCurve c;
+  for (const auto& p : points) c.points.emplace_back(p.gap_m(), p.probability());
+  return c;
+}
+
+OvertakingParams resolve_overtaking(const Overtaking& o) {
+  OvertakingParams p;
+  p.flying = resolve_curve(o.flying(), p.flying);
+  p.accelerated = resolve_curve(o.accelerated(), p.accelerated);
+  p.flying_min_closing_mps = o.flying_min_closing_mps();
+  p.consider_gap_m = o.consider_gap_m();
+  p.decision_interval_s = o.decision_interval_s();
+  p.speed_excess_ratio = o.speed_excess_ratio();
+  p.min_speed_gain_mps = o.min_speed_gain_mps();
+  p.accel_share = o.accel_share();
+  p.max_distance_m = o.max_distance_m();
+  p.lateral_s = o.lateral_s();
+  p.return_time_gap_s = o.return_time_gap_s();
+  p.safety_margin_s = o.safety_margin_s();
+  p.hidden_oncoming_speed_mps = kph_to_mps(o.hidden_oncoming_speed_kph());
+  p.abort_margin_s = o.abort_margin_s();
+  p.commit_share = o.commit_share();
   return p;
 }
 
@@ -75,6 +133,13 @@ RoadConfig resolve_road(const Road& r) {
   c.speed_limit_mps = kph_to_mps(r.speed_limit_kph());
   for (const auto& seg : r.segment()) c.segments.push_back({seg.length_m(), seg.curvature_per_m()});
   for (const auto& z : r.speed_zone()) c.speed_zones.push_back({z.start_m(), z.end_m(), kph_to_mps(z.limit_kph())});
+  for (const auto& z : r.no_overtaking()) {
+    c.no_overtaking.push_back({z.start_m(), z.end_m(), z.directions() != BACKWARD, z.directions() != FORWARD});
+  }
+  for (const auto& l : r.lane_closure()) {
+    c.lane_closures.push_back({direction_of(l.direction()), l.lane(), l.start_m(), l.end_m()});
+  }
+  c.sight_clearance_m = r.sight_clearance_m();
   return c;
 }
 
@@ -126,6 +191,8 @@ ScenarioConfig resolve(const Scenario& s) {
   c.ego = resolve_ego(s.ego());
   std::uint32_t id = 1;
   for (const auto& p : s.play()) c.plays.push_back({id++, p.name(), p.trigger1_s_m(), p.trigger2_s_m()});
+  c.speed_adaptation = resolve_speed_adaptation(s.speed_adaptation());
+  c.overtaking = resolve_overtaking(s.overtaking());
   return c;
 }
 

@@ -6,12 +6,18 @@
 
 #include "behaviour/model_registry.hpp"
 #include "scenario/scenario.pb.h"
+#include "scenario/validate_cursor.hpp"
+#include "scenario/validate_models.hpp"
 
 namespace entourage::scenario {
 
 namespace {
 
-using google::protobuf::Message;
+using detail::check_driver;
+using detail::check_normal;
+using detail::Cursor;
+using detail::fmt;
+using detail::Location;
 using google::protobuf::TextFormat;
 
 // Limits that keep a scenario physically meaningful (and the models in their valid range).
@@ -25,128 +31,6 @@ constexpr double kMaxVehicleLength_m = 30.0;
 constexpr double kMaxVehicleWidth_m = 3.5;
 constexpr double kMaxFlow_veh_per_h = 10000.0;
 constexpr double kMaxDesiredSpeed_kph = 250.0;
-
-struct Location {
-  int line = 0;
-  int column = 0;
-};
-
-std::string fmt(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
-
-// A position in the message tree: the message, where its fields were written, and its path.
-class Cursor {
- public:
-  Cursor(const Message& msg, const TextFormat::ParseInfoTree* tree, std::string path, Location where,
-         const std::string& file, std::vector<Problem>* problems)
-      : msg_(msg), tree_(tree), path_(std::move(path)), where_(where), file_(file), problems_(problems) {}
-
-  Location loc(const std::string& field, int index = -1) const {
-    const auto* fd = msg_.GetDescriptor()->FindFieldByName(field);
-    if (tree_ != nullptr && fd != nullptr) {
-      const auto l = tree_->GetLocation(fd, fd->is_repeated() ? std::max(index, 0) : -1);
-      if (l.line >= 0) return {l.line + 1, l.column + 1};
-    }
-    return where_;
-  }
-
-  std::string path_of(const std::string& field, int index = -1) const {
-    std::string p = path_.empty() ? field : path_ + "." + field;
-    if (index >= 0) p += "[" + std::to_string(index) + "]";
-    return p;
-  }
-
-  Cursor child(const Message& sub, const std::string& field, int index = -1) const {
-    const auto* fd = msg_.GetDescriptor()->FindFieldByName(field);
-    const TextFormat::ParseInfoTree* t = nullptr;
-    if (tree_ != nullptr && fd != nullptr) t = tree_->GetTreeForNested(fd, fd->is_repeated() ? index : -1);
-    return Cursor(sub, t, path_of(field, index), loc(field, index), file_, problems_);
-  }
-
-  void fail(const std::string& field, const std::string& message, int index = -1) const {
-    const Location l = loc(field, index);
-    problems_->push_back({file_, l.line, l.column, path_of(field, index), message});
-  }
-  void fail_here(const std::string& message) const {
-    problems_->push_back({file_, where_.line, where_.column, path_, message});
-  }
-
-  bool has(const std::string& field) const {
-    const auto* fd = msg_.GetDescriptor()->FindFieldByName(field);
-    return fd != nullptr && msg_.GetReflection()->HasField(msg_, fd);
-  }
-
-  bool require(const std::string& field) const {
-    if (has(field)) return true;
-    fail(field, "is required");
-    return false;
-  }
-
-  // value in [lo, hi]; `lo_open` makes the lower bound exclusive.
-  void range(const std::string& field, double value, double lo, double hi, bool lo_open = false) const {
-    if (!std::isfinite(value) || value < lo || (lo_open && value == lo) || value > hi) {
-      fail(field, "must be in " + std::string(lo_open ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + "] (got " +
-                      fmt(value) + ")");
-    }
-  }
-
- private:
-  const Message& msg_;
-  const TextFormat::ParseInfoTree* tree_;
-  std::string path_;
-  Location where_;
-  const std::string& file_;
-  std::vector<Problem>* problems_;
-};
-
-// A Normal: mean present, sd >= 0, min <= mean <= max, and every value it can draw in [lo, hi].
-void check_normal(const Cursor& c, const Normal& n, double lo, double hi, bool lo_open) {
-  if (!c.require("mean")) return;
-  c.range("mean", n.mean(), lo, hi, lo_open);
-  c.range("sd", n.sd(), 0.0, hi);
-  const double mn = n.has_min() ? n.min() : n.mean() - 3.0 * n.sd();
-  const double mx = n.has_max() ? n.max() : n.mean() + 3.0 * n.sd();
-  if (n.has_min()) c.range("min", mn, lo, hi, lo_open);
-  if (n.has_max()) c.range("max", mx, lo, hi, lo_open);
-  if (mn > mx) c.fail("min", "must not exceed max (" + fmt(mn) + " > " + fmt(mx) + ")");
-  if (n.has_min() && n.mean() < mn) c.fail("mean", "is below min");
-  if (n.has_max() && n.mean() > mx) c.fail("mean", "is above max");
-  if (!n.has_min() && n.sd() > 0.0 && (mn < lo || (lo_open && mn <= lo))) {
-    c.fail("sd", "mean - 3 sd = " + fmt(mn) + " leaves the valid range; set min");
-  }
-}
-
-void check_optional_normal(const Cursor& c, const std::string& field, const Normal& n, double lo, double hi,
-                           bool lo_open) {
-  if (c.has(field)) check_normal(c.child(n, field), n, lo, hi, lo_open);
-}
-
-void check_driver(const Cursor& c, const Driver& d) {
-  if (!car_following_model_by_name(d.car_following())) {
-    c.fail("car_following", "unknown model \"" + d.car_following() + "\" (see `entourage models`)");
-  }
-  if (!lane_change_model_by_name(d.lane_change())) {
-    c.fail("lane_change", "unknown model \"" + d.lane_change() + "\" (see `entourage models`)");
-  }
-  if (c.require("desired_speed_kph")) {
-    check_normal(c.child(d.desired_speed_kph(), "desired_speed_kph"), d.desired_speed_kph(), 0.0,
-                 kMaxDesiredSpeed_kph, true);
-  }
-  check_optional_normal(c, "time_gap_s", d.time_gap_s(), 0.0, 10.0, true);
-  check_optional_normal(c, "max_accel_mps2", d.max_accel_mps2(), 0.0, 10.0, true);
-  check_optional_normal(c, "comfort_decel_mps2", d.comfort_decel_mps2(), 0.0, 10.0, true);
-  check_optional_normal(c, "min_gap_m", d.min_gap_m(), 0.0, 20.0, false);
-  check_optional_normal(c, "politeness", d.politeness(), 0.0, 1.0, false);
-  check_optional_normal(c, "lane_change_duration_s", d.lane_change_duration_s(), 0.0, 15.0, true);
-  c.range("accel_exponent", d.accel_exponent(), 0.0, 20.0, true);
-  c.range("beta", d.beta(), 1.0, 10.0);
-  c.range("change_threshold_mps2", d.change_threshold_mps2(), 0.0, 5.0);
-  c.range("right_bias_mps2", d.right_bias_mps2(), -5.0, 5.0);
-  c.range("safe_decel_mps2", d.safe_decel_mps2(), 0.0, 15.0, true);
-}
 
 void check_run(const Cursor& c, const Scenario& s) {
   if (!c.has("name") || s.name().empty()) c.fail("name", "is required");
@@ -172,6 +56,23 @@ void check_road(const Cursor& top, const Scenario& s) {
     if (sc.require("length_m")) sc.range("length_m", r.segment(i).length_m(), 0.0, 1e7, true);
     sc.range("curvature_per_m", r.segment(i).curvature_per_m(), -kMaxCurvature_per_m, kMaxCurvature_per_m);
   }
+  for (int i = 0; i < r.no_overtaking_size(); ++i) {
+    const NoOvertakingZone& z = r.no_overtaking(i);
+    const Cursor zc = c.child(z, "no_overtaking", i);
+    if (!(zc.require("start_m") & zc.require("end_m"))) continue;
+    if (z.end_m() <= z.start_m()) zc.fail("end_m", "must be greater than start_m");
+  }
+  for (int i = 0; i < r.lane_closure_size(); ++i) {
+    const LaneClosure& l = r.lane_closure(i);
+    const Cursor lc = c.child(l, "lane_closure", i);
+    if (!(lc.require("lane") & lc.require("start_m") & lc.require("end_m"))) continue;
+    if (l.direction() == BOTH) lc.fail("direction", "a closure is of one direction's lane: FORWARD or BACKWARD");
+    const int lanes = l.direction() == BACKWARD ? r.lanes_backward() : r.lanes_forward();
+    lc.range("lane", l.lane(), 0, std::max(0, lanes - 1));
+    if (lanes < 2) lc.fail("lane", "closing the only lane of a direction leaves no way through");
+    if (l.end_m() <= l.start_m()) lc.fail("end_m", "must be greater than start_m");
+  }
+  c.range("sight_clearance_m", r.sight_clearance_m(), 0.0, 1000.0, true);
   for (int i = 0; i < r.speed_zone_size(); ++i) {
     const SpeedZone& z = r.speed_zone(i);
     const Cursor zc = c.child(z, "speed_zone", i);
@@ -317,6 +218,8 @@ void validate(const Scenario& s, const TextFormat::ParseInfoTree& tree, const st
   check_demand(top, s, types);
   if (s.has_road()) check_ego(top, s);
   check_plays(top, s);
+  detail::check_speed_adaptation(top, s);
+  detail::check_overtaking(top, s);
 }
 
 }  // namespace entourage::scenario

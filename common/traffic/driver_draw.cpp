@@ -1,13 +1,36 @@
 #include "traffic/driver_draw.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "behaviour/model_registry.hpp"
 
 namespace entourage {
 
+namespace {
+double standard_normal_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
+// Bisection steps for the median: the interval shrinks by 2^-60, far below any speed resolution.
+constexpr int kMedianBisections = 60;
+}  // namespace
+
 double draw(const NormalDist& d, Random& rng) { return rng.truncated_normal(d.mean, d.sd, d.min, d.max); }
 
-DriverParams draw_driver(const VehicleTypeConfig& type, double desired_speed_mps, double base_speed_limit_mps,
-                         std::uint64_t driver_seed, Random& rng) {
+double median_of(const NormalDist& d) {
+  if (d.sd <= 0.0 || d.max <= d.min) return std::clamp(d.mean, d.min, std::max(d.min, d.max));
+  const double lo_p = standard_normal_cdf((d.min - d.mean) / d.sd);
+  const double hi_p = standard_normal_cdf((d.max - d.mean) / d.sd);
+  const double target = 0.5 * (lo_p + hi_p);
+  double lo = d.min;
+  double hi = d.max;
+  for (int i = 0; i < kMedianBisections; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (standard_normal_cdf((mid - d.mean) / d.sd) < target ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+DriverParams draw_driver(const VehicleTypeConfig& type, double desired_speed_mps, std::uint64_t driver_seed,
+                         Random& rng) {
   const DriverPopulation& pop = type.driver;
   DriverParams p;
   p.car_following.model = car_following_model_by_name(pop.car_following).value_or(CarFollowingModel::kIdm);
@@ -26,7 +49,14 @@ DriverParams draw_driver(const VehicleTypeConfig& type, double desired_speed_mps
   p.mobil.safe_decel_mps2 = pop.safe_decel_mps2;
   p.lane_change_duration_s = draw(pop.lane_change_duration_s, rng);
   p.max_decel_mps2 = type.max_decel_mps2;
-  p.desired_speed_factor = base_speed_limit_mps > 0.0 ? desired_speed_mps / base_speed_limit_mps : 1.0;
+  p.desired_speed_median_mps = median_of(pop.desired_speed_mps);
+  GippsParams& gipps = p.car_following.gipps;
+  gipps.reaction_time_s = draw(pop.gipps_reaction_time_s, rng);
+  gipps.max_decel_mps2 = draw(pop.gipps_max_decel_mps2, rng);
+  gipps.leader_decel_estimate_mps2 = pop.gipps_leader_decel_estimate_mps2;
+  p.car_following.human_driver = pop.human_driver;
+  p.car_following.hdm = pop.hdm;
+  p.car_following.hdm.reaction_time_s = draw(pop.hdm_reaction_time_s, rng);
   p.keep_right = type.keep_right;
   p.rng_state = driver_seed;
   return p;

@@ -1,160 +1,234 @@
 #include "traffic/driving.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+
+#include "traffic/lane_changes.hpp"
+#include "traffic/overtaking_manoeuvre.hpp"
 
 namespace entourage {
 
 namespace {
-// Below this gap to a slower leader, the emergency regime stops the vehicle at the latest here.
+// The emergency regime stops a vehicle at the latest this far behind what it approaches.
 constexpr double kEmergencyStandstillGap_m = 0.5;
+// Leaders the HDM can anticipate at most (its n_a is capped here).
+constexpr std::size_t kMaxAnticipated = 8;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 LeaderView view_of(const Occupant& leader, const Vehicle& v) {
   return LeaderView{gap_between(leader, v.progress_m(), v.length_m), leader.speed_mps, leader.accel_mps2};
 }
 
-// Acceleration another driver (speed `speed_mps`, progress `progress_m`, length `length_m`) would
-// have behind `leader`, estimated with the deciding driver's own parameters (a driver judges
-// others by how it would drive itself; this also keeps decisions independent of who owns whom).
-double estimated_accel(const Vehicle& judge, double progress_m, double speed_mps, double length_m,
-                       const Occupant* leader) {
-  if (leader == nullptr) return idm_free_accel_mps2(judge.driver.car_following.idm, speed_mps);
-  const LeaderView lv{gap_between(*leader, progress_m, length_m), leader->speed_mps, leader->accel_mps2};
-  return car_following_accel_mps2(judge.driver.car_following, speed_mps, &lv);
+// The lanes `v` occupies: its own, and the one it moves into while it moves sideways.
+struct Occupied {
+  std::array<int, 2> lanes{};
+  int count = 1;
+};
+Occupied occupied(const Vehicle& v) {
+  Occupied o;
+  o.lanes[0] = v.lane;
+  if (v.lane_change.moving() && v.lane_change.to_lane != v.lane) {
+    o.lanes[1] = v.lane_change.to_lane;
+    o.count = 2;
+  }
+  return o;
 }
 
-Occupant as_occupant(const Vehicle& v) {
-  return Occupant{v.id, v.progress_m(), v.speed_mps, v.accel_mps2, v.length_m};
+// Up to `max` nearest leaders of v in `lane`, nearest first.
+std::size_t leaders_in(const Vehicle& v, const LaneIndex& index, int lane, LeaderView* out, std::size_t max) {
+  const auto& l = index.lane(v.direction, lane);
+  const Occupant probe{v.id, v.progress_m(), 0.0, 0.0, 0.0};
+  auto it = std::upper_bound(l.begin(), l.end(), probe, [](const Occupant& a, const Occupant& b) {
+    return a.progress_m < b.progress_m || (a.progress_m == b.progress_m && a.id < b.id);
+  });
+  std::size_t n = 0;
+  for (; it != l.end() && n < max; ++it) {
+    if (it->id != v.id) out[n++] = view_of(*it, v);
+  }
+  return n;
 }
 
-bool lane_allowed(const Vehicle& v, int lane, int lanes) {
-  if (lane < 0 || lane >= lanes) return false;
-  return !v.driver.keep_right || lane <= v.lane;  // keep-right vehicles only move right
+// Something standing in the way that is not a vehicle of the own direction: the start of a closure
+// of the lane, or the point where the driver would meet an opposite-direction vehicle in its lane.
+struct Obstacle {
+  double gap_m = kInfinity;
+  double closing_mps = 0.0;  // how fast the driver approaches it (its own speed: it stands)
+};
+
+Obstacle obstacle_in(const Vehicle& v, const LaneIndex& index, int lane, const DrivingEnvironment& env) {
+  Obstacle ob;
+  const DrivingRules& rules = env.rules();
+  if (lane < env.lanes(v.direction)) {
+    const double to_closure = env.ahead().distance_to_closure_m(v.direction, lane, v.s_m) - 0.5 * v.length_m;
+    if (to_closure < rules.mandatory_lookahead_m) ob.gap_m = std::max(0.0, to_closure);
+  }
+  if (env.two_way()) {
+    if (const Occupant* o = index.oncoming(v.direction, lane, v.progress_m())) {
+      const double gap = std::max(0.0, oncoming_gap(*o, v.progress_m(), v.length_m));
+      const double closing = v.speed_mps + o->speed_mps;
+      // Both drivers stop short of the meeting point: each has half the gap.
+      if (closing > 0.0 && gap < rules.oncoming_reaction_s * closing) ob.gap_m = std::min(ob.gap_m, 0.5 * gap);
+    }
+  }
+  ob.closing_mps = v.speed_mps;
+  return ob;
+}
+
+struct Longitudinal {
+  double decided_mps2 = 0.0;  // the model's acceleration now (HDM: before the reaction delay)
+  double applied_mps2 = 0.0;
+  bool emergency = false;
+};
+
+double emergency_limit(const Vehicle& v, const CarFollowingParams& cf, double gap_m, double closing_mps, double a,
+                       bool* emergency) {
+  const double needed = stopping_decel_mps2(gap_m, closing_mps);
+  if (needed > cf.idm.comfort_decel_mps2 && -needed < a) {
+    *emergency = true;
+    return -std::min(needed, v.driver.max_decel_mps2);
+  }
+  return a;
+}
+
+Longitudinal longitudinal(const Vehicle& v, const CarFollowingParams& cf, const LaneIndex& index,
+                          const DrivingEnvironment& env) {
+  const bool hdm = cf.human_driver;
+  const std::size_t anticipate =
+      hdm ? std::min<std::size_t>(kMaxAnticipated, static_cast<std::size_t>(std::max(1, cf.hdm.anticipated_leaders))) : 1;
+  std::array<LeaderView, kMaxAnticipated> views{};
+  std::array<std::size_t, 2> counts{};
+  std::array<LeaderView, 2> nearest{};
+  std::array<Obstacle, 2> obstacles{};
+  const Occupied occ = occupied(v);
+  double decided = kInfinity;
+  for (int i = 0; i < occ.count; ++i) {
+    const int lane = occ.lanes[static_cast<std::size_t>(i)];
+    const std::size_t n = leaders_in(v, index, lane, views.data(), anticipate);
+    counts[static_cast<std::size_t>(i)] = n;
+    if (n > 0) nearest[static_cast<std::size_t>(i)] = views[0];
+    const double a = hdm ? hdm_instant_accel_mps2(cf, cf.hdm, v.hdm_errors, v.speed_mps, views.data(), n)
+                         : car_following_accel_mps2(cf, v.speed_mps, n > 0 ? views.data() : nullptr);
+    decided = std::min(decided, a);
+    const Obstacle ob = obstacle_in(v, index, lane, env);
+    obstacles[static_cast<std::size_t>(i)] = ob;
+    if (std::isfinite(ob.gap_m)) {
+      const LeaderView standing{ob.gap_m, 0.0, 0.0};
+      decided = std::min(decided, car_following_accel_mps2(cf, v.speed_mps, &standing));
+    }
+  }
+  Longitudinal out;
+  out.decided_mps2 = decided;
+  double a = hdm ? v.hdm_memory.delayed(decided, cf.hdm.reaction_time_s, env.dt_s()) : decided;
+  for (int i = 0; i < occ.count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (counts[k] > 0) {
+      a = emergency_limit(v, cf, nearest[k].gap_m, v.speed_mps - nearest[k].speed_mps, a, &out.emergency);
+    }
+    if (std::isfinite(obstacles[k].gap_m)) {
+      a = emergency_limit(v, cf, obstacles[k].gap_m, obstacles[k].closing_mps, a, &out.emergency);
+    }
+  }
+  out.applied_mps2 = std::max(a, -v.driver.max_decel_mps2);
+  return out;
+}
+
+LaneChangeState advance_lateral(const Vehicle& v, double dt_s) {
+  LaneChangeState lc = v.lane_change;
+  if (lc.moving()) lc.phase_elapsed_s += dt_s;
+  return lc;
+}
+
+void finish_lane_change_if_done(Vehicle& v) {
+  LaneChangeState& lc = v.lane_change;
+  if (lc.moving() && lc.phase_elapsed_s >= lc.duration_s) {
+    v.lane = lc.to_lane;
+    lc.from_lane = lc.to_lane;
+    lc.phase = LaneChangePhase::kNone;
+    lc.phase_elapsed_s = 0.0;
+    lc.since_last_change_s = 0.0;
+  }
 }
 }  // namespace
+
+CarFollowingParams local_params(const Vehicle& v, const DrivingEnvironment& env) {
+  CarFollowingParams cf = v.driver.car_following;
+  cf.idm.desired_speed_mps =
+      env.speeds().desired_speed_mps(v.direction, v.s_m, v.driver.desired_speed_mps(), v.driver.basic_median_mps());
+  return cf;
+}
 
 const Occupant* leader_of(const Vehicle& v, const LaneIndex& index, int lane) {
   return index.leader(v.direction, lane, v.progress_m(), v.id);
 }
 
-double accel_behind(const Vehicle& v, const Occupant* leader, bool* emergency) {
-  if (leader == nullptr) return car_following_accel_mps2(v.driver.car_following, v.speed_mps, nullptr);
+double stopping_decel_mps2(double gap_m, double closing_mps) {
+  if (closing_mps <= 0.0) return 0.0;
+  const double room = gap_m - kEmergencyStandstillGap_m;
+  return room > 0.0 ? closing_mps * closing_mps / (2.0 * room) : kInfinity;
+}
+
+double accel_behind(const Vehicle& v, const CarFollowingParams& cf, const Occupant* leader, bool* emergency) {
+  if (leader == nullptr) return car_following_accel_mps2(cf, v.speed_mps, nullptr);
   const LeaderView lv = view_of(*leader, v);
-  double a = car_following_accel_mps2(v.driver.car_following, v.speed_mps, &lv);
-  // Emergency regime: the deceleration that stops the approach before the gap closes, assuming
-  // the leader keeps its speed; applied when it exceeds what the model asks for.
-  const double closing = v.speed_mps - leader->speed_mps;
-  if (closing > 0.0) {
-    const double room = lv.gap_m - kEmergencyStandstillGap_m;
-    const double needed = room > 0.0 ? closing * closing / (2.0 * room) : v.driver.max_decel_mps2;
-    if (needed > v.driver.car_following.idm.comfort_decel_mps2 && -needed < a) {
-      a = -needed;
-      if (emergency != nullptr) *emergency = true;
-    }
-  }
+  double a = car_following_accel_mps2(cf, v.speed_mps, &lv);
+  bool em = false;
+  a = emergency_limit(v, cf, lv.gap_m, v.speed_mps - leader->speed_mps, a, &em);
+  if (em && emergency != nullptr) *emergency = true;
   return std::max(a, -v.driver.max_decel_mps2);
 }
 
-LaneChangeOption evaluate_lane_change(const Vehicle& v, const LaneIndex& index, int target) {
-  LaneChangeOption opt;
-  opt.target_lane = target;
-  const Occupant* lead_now = leader_of(v, index, v.lane);
-  const Occupant* lead_new = leader_of(v, index, target);
-  const Occupant* follow_new = index.follower(v.direction, target, v.progress_m(), v.id);
-  const Occupant* follow_old = index.follower(v.direction, v.lane, v.progress_m(), v.id);
-  const Occupant self = as_occupant(v);
-
-  // No overlap with the vehicles beside us in the target lane.
-  if (lead_new != nullptr && gap_between(*lead_new, v.progress_m(), v.length_m) <= 0.0) return opt;
-  if (follow_new != nullptr && gap_between(self, follow_new->progress_m, follow_new->length_m) <= 0.0) return opt;
-
-  MobilSituation s;
-  s.to_right = target < v.lane;
-  s.self_now_mps2 = accel_behind(v, lead_now);
-  s.self_after_mps2 = accel_behind(v, lead_new);
-  if (follow_new != nullptr) {
-    s.new_follower_now_mps2 =
-        estimated_accel(v, follow_new->progress_m, follow_new->speed_mps, follow_new->length_m, lead_new);
-    s.new_follower_after_mps2 =
-        estimated_accel(v, follow_new->progress_m, follow_new->speed_mps, follow_new->length_m, &self);
-  }
-  if (follow_old != nullptr) {
-    s.old_follower_now_mps2 =
-        estimated_accel(v, follow_old->progress_m, follow_old->speed_mps, follow_old->length_m, &self);
-    s.old_follower_after_mps2 =
-        estimated_accel(v, follow_old->progress_m, follow_old->speed_mps, follow_old->length_m, lead_now);
-  }
-  const MobilDecision d = mobil_decide(v.driver.mobil, s);
-  opt.safe = d.safe;
-  opt.advantage_mps2 = d.advantage_mps2;
-  return opt;
+double accel_behind(const Vehicle& v, const Occupant* leader, bool* emergency) {
+  return accel_behind(v, v.driver.car_following, leader, emergency);
 }
 
-namespace {
-LaneChangeState plan_lane_change(const Vehicle& v, const LaneIndex& index, const DrivingRules& rules,
-                                 double dt_s) {
-  LaneChangeState lc = v.lane_change;
-  const int lanes = index.lanes(v.direction);
-  switch (lc.phase) {
-    case LaneChangePhase::kNone: {
-      lc.since_last_change_s += dt_s;
-      if (v.driver.lane_change != LaneChangeModel::kMobil || lc.since_last_change_s < rules.min_interval_s) break;
-      LaneChangeOption best;
-      bool found = false;
-      for (int target : {v.lane - 1, v.lane + 1}) {  // right first: it wins ties
-        if (!lane_allowed(v, target, lanes)) continue;
-        const LaneChangeOption opt = evaluate_lane_change(v, index, target);
-        if (opt.safe && opt.advantage_mps2 > 0.0 && (!found || opt.advantage_mps2 > best.advantage_mps2)) {
-          best = opt;
-          found = true;
-        }
-      }
-      if (found) {
-        lc.from_lane = v.lane;
-        lc.to_lane = best.target_lane;
-        lc.phase = LaneChangePhase::kSignalling;
-        lc.phase_elapsed_s = 0.0;
-        lc.duration_s = v.driver.lane_change_duration_s;
-      }
-      break;
-    }
-    case LaneChangePhase::kSignalling: {
-      lc.phase_elapsed_s += dt_s;
-      if (lc.phase_elapsed_s < rules.signal_s) break;
-      const LaneChangeOption opt = evaluate_lane_change(v, index, lc.to_lane);
-      if (opt.safe) {
-        lc.phase = LaneChangePhase::kMoving;
-        lc.phase_elapsed_s = 0.0;
-      } else if (lc.phase_elapsed_s >= rules.max_signal_wait_s) {
-        lc.phase = LaneChangePhase::kNone;  // give up; the interval restarts
-        lc.to_lane = lc.from_lane;
-        lc.since_last_change_s = 0.0;
-      }
-      break;
-    }
-    case LaneChangePhase::kMoving:
-      lc.phase_elapsed_s += dt_s;
-      break;
-  }
-  return lc;
-}
-}  // namespace
-
-Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingRules& rules, double dt_s) {
+Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env) {
   Decision d;
-  d.lane_change = plan_lane_change(v, index, rules, dt_s);
-  bool emergency = false;
-  double a = accel_behind(v, leader_of(v, index, v.lane), &emergency);
-  if (v.lane_change.moving()) {  // occupying both lanes: respect the leader in each
-    a = std::min(a, accel_behind(v, leader_of(v, index, v.lane_change.to_lane), &emergency));
+  d.rng_state = v.driver.rng_state;
+  d.overtaking = v.overtaking;
+  CarFollowingParams cf = local_params(v, env);
+
+  double accel_cap = kInfinity;
+  bool lateral_decided = false;
+  if (overtakes(v, env) || v.overtaking.active()) {
+    const OvertakingStep ot = overtaking_step(v, index, env, cf.idm.desired_speed_mps);
+    d.overtaking = ot.state;
+    d.rng_state = ot.rng_state;
+    cf.idm.desired_speed_mps = ot.desired_speed_mps;
+    accel_cap = ot.accel_cap_mps2;
+    if (ot.lateral_start) {
+      d.lane_change = ot.lane_change;
+      lateral_decided = true;
+    } else if (v.overtaking.active() || ot.state.active()) {
+      d.lane_change = advance_lateral(v, env.dt_s());
+      lateral_decided = true;
+    }
   }
-  d.accel_mps2 = a;
-  d.emergency = emergency;
+  if (!lateral_decided) {
+    const LaneChangePlan plan = plan_lane_change(v, cf, index, env);
+    d.lane_change = plan.state;
+    d.mandatory_change = plan.mandatory;
+  }
+
+  const Longitudinal lon = longitudinal(v, cf, index, env);
+  d.hdm_decided_mps2 = lon.decided_mps2;
+  d.accel_mps2 = std::max(std::min(lon.applied_mps2, accel_cap), -v.driver.max_decel_mps2);
+  d.emergency = lon.emergency;
   return d;
 }
 
 void commit(Vehicle& v, const Decision& d, double dt_s) {
   v.lane_change = d.lane_change;
+  v.overtaking = d.overtaking;
+  v.driver.rng_state = d.rng_state;
+  if (v.driver.car_following.human_driver) {
+    v.hdm_memory.push(d.hdm_decided_mps2);
+    SmallRandom rng(v.driver.rng_state);
+    advance_hdm_errors(v.hdm_errors, v.driver.car_following.hdm, dt_s, rng);
+    v.driver.rng_state = rng.state();
+  }
   const double a = d.accel_mps2;
   const double v_end = v.speed_mps + a * dt_s;
   double ds = 0.0;
@@ -167,15 +241,7 @@ void commit(Vehicle& v, const Decision& d, double dt_s) {
   }
   v.accel_mps2 = a;
   v.s_m += sign(v.direction) * ds;
-
-  LaneChangeState& lc = v.lane_change;
-  if (lc.moving() && lc.phase_elapsed_s >= lc.duration_s) {
-    v.lane = lc.to_lane;
-    lc.from_lane = lc.to_lane;
-    lc.phase = LaneChangePhase::kNone;
-    lc.phase_elapsed_s = 0.0;
-    lc.since_last_change_s = 0.0;
-  }
+  finish_lane_change_if_done(v);
 }
 
 void continue_lane_change(Vehicle& v, double dt_s) {
@@ -186,13 +252,7 @@ void continue_lane_change(Vehicle& v, double dt_s) {
     lc.to_lane = lc.from_lane = v.lane;
   } else if (lc.moving()) {
     lc.phase_elapsed_s += dt_s;
-    if (lc.phase_elapsed_s >= lc.duration_s) {
-      v.lane = lc.to_lane;
-      lc.from_lane = lc.to_lane;
-      lc.phase = LaneChangePhase::kNone;
-      lc.phase_elapsed_s = 0.0;
-      lc.since_last_change_s = 0.0;
-    }
+    finish_lane_change_if_done(v);
   }
 }
 

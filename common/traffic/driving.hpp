@@ -1,49 +1,53 @@
 #pragma once
-// One driver's decisions in a step, from its own state and what it sees (the lane index built
-// from the world state at the previous step): its acceleration (car following, emergency braking)
-// and its lane change (MOBIL decision, indicator, lateral movement over time). Pure functions:
-// the caller computes every driver's decision from the same snapshot, then commits them all.
+// One driver's decisions in a step, from its own state, what it sees (the lane index built from
+// the world state at the previous step) and the road (driving_environment.hpp): its acceleration
+// (car following with the desired speed of the place, the Human Driver Model's delay and errors,
+// obstacles, the emergency regime) and its lane change (MOBIL, mandatory changes, overtaking in
+// the oncoming lane). Pure functions: the caller computes every driver's decision from the same
+// snapshot, then commits them all.
 
-#include <optional>
+#include <cstdint>
 
+#include "traffic/driving_environment.hpp"
 #include "traffic/lane_index.hpp"
 #include "traffic/vehicle.hpp"
 
 namespace entourage {
 
-// Timing of lane changes (thesis ch. 3.2: lane changes must take time to look real).
-struct DrivingRules {
-  double signal_s = 1.5;           // indicator on before the lateral movement starts
-  double max_signal_wait_s = 4.0;  // a change that has not become safe by then is given up
-  double min_interval_s = 5.0;     // from the end of one change to the decision on the next
-};
-
 struct Decision {
   double accel_mps2 = 0.0;
-  LaneChangeState lane_change;  // the state to commit
-  bool emergency = false;       // the emergency regime overrode the model
+  LaneChangeState lane_change;   // the state to commit
+  OvertakingState overtaking;    // the state to commit
+  double hdm_decided_mps2 = 0.0; // the HDM's undelayed decision, remembered for the reaction time
+  std::uint64_t rng_state = 0;   // the driver's random stream after this step's draws
+  bool emergency = false;        // the emergency regime overrode the model
+  bool mandatory_change = false; // the lane change started is a mandatory one
 };
+
+// The driver's car-following parameters at its place: its own, with the desired speed that speed
+// adaptation gives there (and the passing speed while it overtakes).
+CarFollowingParams local_params(const Vehicle& v, const DrivingEnvironment& env);
 
 // The leader of `v` in `lane` (nullptr on a free road).
 const Occupant* leader_of(const Vehicle& v, const LaneIndex& index, int lane);
 
-// Car-following acceleration of `v` behind `leader`, with the emergency regime: when the model
-// would not stop the vehicle in time behind a slower leader, brake as needed, up to the limit.
+// Car-following acceleration of `v` behind `leader` with parameters `cf`, with the emergency
+// regime: when the model would not stop the vehicle in time behind a slower leader, brake as
+// needed, up to the vehicle's limit.
+double accel_behind(const Vehicle& v, const CarFollowingParams& cf, const Occupant* leader, bool* emergency = nullptr);
+// The same with the driver's own (basic) parameters.
 double accel_behind(const Vehicle& v, const Occupant* leader, bool* emergency = nullptr);
 
-// MOBIL evaluation of a change from v.lane to `target` (no checks of timing or lane range).
-struct LaneChangeOption {
-  int target_lane = 0;
-  bool safe = false;
-  double advantage_mps2 = 0.0;
-};
-LaneChangeOption evaluate_lane_change(const Vehicle& v, const LaneIndex& index, int target);
+// The deceleration that stops the approach to something `gap_m` ahead, closing at `closing_mps`,
+// before the gap closes (0 if not closing).
+double stopping_decel_mps2(double gap_m, double closing_mps);
 
 // The full decision of one driver for this step.
-Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingRules& rules, double dt_s);
+Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env);
 
 // Moves `v` over one step with constant acceleration (ballistic update; a vehicle that would
-// roll backwards stops instead) and advances its lane change. Commits `d` first.
+// roll backwards stops instead), advances its lane change, its overtaking and the HDM's state.
+// Commits `d` first.
 void commit(Vehicle& v, const Decision& d, double dt_s);
 
 // For models that decide no lane changes (meso, the generator's front zone): a vehicle handed over

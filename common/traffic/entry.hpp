@@ -10,9 +10,6 @@
 
 namespace entourage {
 
-// A vehicle not placed yet has no id among the others.
-inline constexpr VehicleId kNoVehicle = std::numeric_limits<VehicleId>::max();
-
 // The gap a driver of `type` wants behind a leader: IDM's s*(v, v - v_leader) with the type's
 // mean parameters, and never less than s0 plus half the time gap (where s* shrinks to s0 behind a
 // leader pulling away).

@@ -12,8 +12,10 @@ const std::vector<Occupant> kEmptyLane;
 }  // namespace
 
 LaneIndex::LaneIndex(int lanes_forward, int lanes_backward)
-    : forward_(static_cast<std::size_t>(std::max(0, lanes_forward))),
-      backward_(static_cast<std::size_t>(std::max(0, lanes_backward))) {}
+    : lanes_forward_(std::max(0, lanes_forward)),
+      lanes_backward_(std::max(0, lanes_backward)),
+      forward_(static_cast<std::size_t>(lanes_forward_ + lanes_backward_)),
+      backward_(static_cast<std::size_t>(lanes_forward_ + lanes_backward_)) {}
 
 void LaneIndex::clear() {
   for (auto& l : forward_) l.clear();
@@ -41,8 +43,28 @@ const std::vector<Occupant>& LaneIndex::lane(Direction dir, int lane) const {
   return lanes[static_cast<std::size_t>(lane)];
 }
 
-int LaneIndex::lanes(Direction dir) const {
+int LaneIndex::lanes(Direction dir) const { return dir == Direction::kForward ? lanes_forward_ : lanes_backward_; }
+
+int LaneIndex::slots(Direction dir) const {
   return static_cast<int>(dir == Direction::kForward ? forward_.size() : backward_.size());
+}
+
+int LaneIndex::opposite_slot(Direction dir, int lane_no) const {
+  const Direction opp = dir == Direction::kForward ? Direction::kBackward : Direction::kForward;
+  const int own = lanes(dir);
+  const int other = lanes(opp);
+  if (lane_no < 0 || lane_no >= own + other) return -1;
+  // Physical lanes numbered from dir's right edge: 0 .. own-1 its lanes, own .. own+other-1 the
+  // opposite carriageway's, whose own numbering runs the other way.
+  return own + other - 1 - lane_no;
+}
+
+const Occupant* LaneIndex::oncoming(Direction dir, int lane_no, double progress_m) const {
+  const int opp_slot = opposite_slot(dir, lane_no);
+  if (opp_slot < 0) return nullptr;
+  const Direction opp = dir == Direction::kForward ? Direction::kBackward : Direction::kForward;
+  // Ahead of us in our sense is behind -progress in theirs: the nearest is their follower there.
+  return follower(opp, opp_slot, -progress_m, kNoVehicle);
 }
 
 const Occupant* LaneIndex::leader(Direction dir, int lane_no, double progress_m, VehicleId self) const {

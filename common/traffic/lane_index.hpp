@@ -2,6 +2,13 @@
 // Who is where: for each direction and lane, the vehicles in it ordered by progress along the
 // direction of travel. A vehicle changing lanes is in both lanes. Built once per step from the
 // world state (all owners and the ego) and queried for leaders and followers.
+//
+// Lane numbers of a direction: 0 .. lanes(dir) - 1 are its own lanes, 0 the rightmost. On a road
+// with oncoming traffic a vehicle that overtakes uses the oncoming carriageway: lane
+// lanes(dir) + j of its direction is the opposite direction's lane lanes(opp) - 1 - j (counting on
+// to the left across the centre line). Each direction keeps the vehicles of its own direction in
+// every slot; the vehicles of the other direction in the same physical lane are its oncoming
+// traffic (oncoming()).
 
 #include <vector>
 
@@ -31,11 +38,21 @@ class LaneIndex {
   const Occupant* follower(Direction dir, int lane, double progress_m, VehicleId self) const;
 
   const std::vector<Occupant>& lane(Direction dir, int lane) const;
-  int lanes(Direction dir) const;
+  int lanes(Direction dir) const;  // the direction's own lanes
+  int slots(Direction dir) const;  // own lanes and the oncoming carriageway's
+
+  // The same physical lane numbered from the opposite direction (-1 if it has none).
+  int opposite_slot(Direction dir, int lane) const;
+  // The nearest vehicle of the opposite direction ahead of `progress_m` (in `dir`'s sense) in the
+  // physical lane `lane` of `dir`, coming towards it; nullptr if none. Its progress_m is in its
+  // own direction's sense (use oncoming_gap()).
+  const Occupant* oncoming(Direction dir, int lane, double progress_m) const;
 
  private:
   std::vector<Occupant>* slot(Direction dir, int lane);
 
+  int lanes_forward_;
+  int lanes_backward_;
   std::vector<std::vector<Occupant>> forward_;
   std::vector<std::vector<Occupant>> backward_;
 };
@@ -43,6 +60,12 @@ class LaneIndex {
 // Bumper-to-bumper gap from a follower to its leader.
 inline double gap_between(const Occupant& leader, double follower_progress_m, double follower_length_m) {
   return leader.progress_m - follower_progress_m - 0.5 * (leader.length_m + follower_length_m);
+}
+
+// Front-to-front gap between a vehicle (progress in its own direction's sense) and an oncoming
+// one found by LaneIndex::oncoming(), whose progress is in the opposite sense.
+inline double oncoming_gap(const Occupant& oncoming, double progress_m, double length_m) {
+  return -oncoming.progress_m - progress_m - 0.5 * (oncoming.length_m + length_m);
 }
 
 }  // namespace entourage

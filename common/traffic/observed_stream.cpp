@@ -55,7 +55,13 @@ ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, co
     next_snapshot += how.snapshot_every_s;
     std::vector<StreamVehicle> snap;
     for (const Vehicle& v : sim.fleet().vehicles()) {
-      if (v.s_m >= how.settled_from_m && v.s_m < how.road_length_m) snap.push_back({v.s_m - how.settled_from_m, v});
+      // Vehicles in the middle of an overtaking are left out: a window cannot start with a
+      // vehicle beside the one it passes (the stream loses a fraction of a percent).
+      if (v.direction != dir || v.overtaking.active() || v.lane >= lanes) continue;
+      const double along_m = dir == Direction::kForward ? v.s_m : how.road_length_m - v.s_m;
+      if (along_m >= how.settled_from_m && along_m < how.road_length_m) {
+        snap.push_back({along_m - how.settled_from_m, v});
+      }
     }
     std::sort(snap.begin(), snap.end(), [](const auto& a, const auto& b) { return a.offset_m < b.offset_m; });
     vehicles += snap.size();

@@ -1,5 +1,7 @@
 #include "traffic/road_sim.hpp"
 
+#include <algorithm>
+
 #include "traffic/driver_draw.hpp"
 #include "traffic/entry.hpp"
 
@@ -7,27 +9,60 @@ namespace entourage {
 
 namespace {
 constexpr std::uint64_t kDriverStreamLabel = 0x726f616473696d00ULL;
+constexpr std::size_t kDirections = 2;
+
+std::size_t dir_index(Direction d) { return d == Direction::kForward ? 0 : 1; }
+
+RoadSimConfig for_demand_of(const ScenarioConfig& scenario, Direction demand_of, RoadSimConfig config) {
+  const bool two_way = scenario.road.kind == RoadKind::kRural && scenario.road.lanes_forward > 0 &&
+                       scenario.road.lanes_backward > 0;
+  config.forward = demand_of == Direction::kForward || two_way;
+  config.backward = demand_of == Direction::kBackward || two_way;
+  return config;
+}
 }  // namespace
 
-RoadSim::RoadSim(const ScenarioConfig& scenario, Direction demand_of, RoadSimConfig config, std::uint64_t seed)
-    : scenario_(scenario),
+ScenarioConfig road_sim_scenario(const ScenarioConfig& scenario, const RoadSimConfig& config) {
+  ScenarioConfig c = scenario;
+  if (!config.scenario_road) {
+    c.road.length_m = config.length_m;
+    c.road.segments.clear();
+    c.road.speed_zones.clear();
+    c.road.no_overtaking.clear();
+    c.road.lane_closures.clear();
+  }
+  return c;
+}
+
+RoadSim::RoadSim(const ScenarioConfig& scenario, RoadSimConfig config, std::uint64_t seed)
+    : scenario_(road_sim_scenario(scenario, config)),
       config_(std::move(config)),
-      stream_(make_stream(scenario, demand_of)),
+      env_(scenario_, config_.rules),
       rng_(seed),
       seed_(seed),
-      index_(scenario.road.lanes(demand_of), 0),
-      crossings_(config_.detectors_m.size()),
-      last_crossing_time_(config_.detectors_m.size(),
-                          std::vector<double>(static_cast<std::size_t>(scenario.road.lanes(demand_of)),
-                                              -std::numeric_limits<double>::infinity())) {
-  next_arrival_ = rng_.exponential(1.0);
+      index_(scenario_.road.lanes_forward, scenario_.road.lanes_backward),
+      crossings_(config_.detectors_m.size()) {
+  const std::size_t slots =
+      static_cast<std::size_t>(std::max(1, scenario_.road.lanes_forward + scenario_.road.lanes_backward));
+  last_crossing_time_.assign(config_.detectors_m.size(),
+                             std::vector<double>(kDirections * slots, -std::numeric_limits<double>::infinity()));
+  for (Direction d : {Direction::kForward, Direction::kBackward}) {
+    Source& src = source(d);
+    src.active = (d == Direction::kForward ? config_.forward : config_.backward) && scenario_.road.lanes(d) > 0;
+    src.stream = std::make_unique<StreamModel>(make_stream(scenario_, d));
+    if (src.active) src.next_arrival = rng_.exponential(1.0);
+  }
 }
+
+RoadSim::RoadSim(const ScenarioConfig& scenario, Direction demand_of, RoadSimConfig config, std::uint64_t seed)
+    : RoadSim(scenario, for_demand_of(scenario, demand_of, std::move(config)), seed) {}
 
 void RoadSim::step() {
   ++steps_;
   arrive();
   perceive();
-  enter();
+  enter(Direction::kForward);
+  enter(Direction::kBackward);
   std::vector<double> before;
   before.reserve(fleet_.size());
   for (const auto& v : fleet_.vehicles()) before.push_back(v.s_m);
@@ -37,62 +72,85 @@ void RoadSim::step() {
 }
 
 void RoadSim::arrive() {
-  accumulated_ += stream_.flow_veh_per_s() * scenario_.step_s;
-  while (accumulated_ >= next_arrival_) {
-    accumulated_ -= next_arrival_;
-    next_arrival_ = rng_.exponential(1.0);
-    queue_.push_back(stream_.draw_time_mean(rng_));
+  for (Source& src : sources_) {
+    if (!src.active) continue;
+    src.accumulated += src.stream->flow_veh_per_s() * scenario_.step_s;
+    while (src.accumulated >= src.next_arrival) {
+      src.accumulated -= src.next_arrival;
+      src.next_arrival = rng_.exponential(1.0);
+      src.queue.push_back(src.stream->draw_time_mean(rng_));
+    }
   }
 }
 
 void RoadSim::perceive() { build_index(index_, fleet_, {}, nullptr); }
 
-void RoadSim::enter() {
-  while (!queue_.empty()) {
-    const SpeedDraw d = queue_.front();
+void RoadSim::enter(Direction dir) {
+  Source& src = source(dir);
+  const double entry_s = dir == Direction::kForward ? 0.0 : scenario_.road.length_m;
+  const double progress = sign(dir) * entry_s;
+  while (!src.queue.empty()) {
+    const SpeedDraw d = src.queue.front();
     const VehicleTypeConfig& type = scenario_.vehicle_types[d.type_index];
-    const auto spot = find_entry(index_, Direction::kForward, 0.0, d.speed_mps, type);
+    const auto spot = find_entry(index_, dir, progress, d.speed_mps, type);
     if (!spot) return;  // the entrance is full: wait
     const VehicleId id = next_id_++;
     const std::uint64_t driver_seed = Random::derived(seed_, kDriverStreamLabel ^ id).next_u64();
-    const DriverParams driver = draw_driver(type, d.speed_mps, scenario_.road.speed_limit_mps, driver_seed, rng_);
-    Vehicle v = make_vehicle(id, d.type_index, type, Direction::kForward, spot->lane, 0.0, spot->speed_mps, driver);
+    const DriverParams driver = draw_driver(type, d.speed_mps, driver_seed, rng_);
+    Vehicle v = make_vehicle(id, d.type_index, type, dir, spot->lane, entry_s, spot->speed_mps, driver);
     Handoff h;
     h.vehicle = v;
     fleet_.adopt(h, 0, scenario_.step_s);
-    add_to_index(index_, Direction::kForward, spot->lane, spot->lane, id, 0.0, spot->speed_mps, 0.0, v.length_m);
+    add_to_index(index_, dir, spot->lane, spot->lane, id, progress, spot->speed_mps, 0.0, v.length_m);
     index_.sort();
-    queue_.pop_front();
+    src.queue.pop_front();
+    ++counters_.entered;
   }
 }
 
 void RoadSim::move() {
   const double dt = scenario_.step_s;
-  std::vector<Decision> decisions;
-  decisions.reserve(fleet_.size());
-  for (const Vehicle& v : fleet_.vehicles()) decisions.push_back(decide(v, index_, config_.rules, dt));
+  decisions_.clear();
+  decisions_.reserve(fleet_.size());
+  for (const Vehicle& v : fleet_.vehicles()) decisions_.push_back(decide(v, index_, env_));
   auto& vehicles = fleet_.vehicles();
-  for (std::size_t i = 0; i < vehicles.size(); ++i) commit(vehicles[i], decisions[i], dt);
+  for (std::size_t i = 0; i < vehicles.size(); ++i) {
+    const Decision& d = decisions_[i];
+    Vehicle& v = vehicles[i];
+    if (d.emergency) ++counters_.emergency_decisions;
+    if (!v.lane_change.active() && d.lane_change.active() && !d.overtaking.active()) ++counters_.lane_changes;
+    if (d.overtaking.started > v.overtaking.started) ++counters_.overtakings_started;
+    if (d.overtaking.aborted > v.overtaking.aborted) ++counters_.overtakings_aborted;
+    commit(v, d, dt);
+  }
   updates_ += vehicles.size();
 }
 
 void RoadSim::detect(const std::vector<double>& before) {
   const auto& vehicles = fleet_.vehicles();
+  const std::size_t slots = last_crossing_time_.empty() ? 0 : last_crossing_time_[0].size() / kDirections;
   for (std::size_t d = 0; d < config_.detectors_m.size(); ++d) {
     const double x = config_.detectors_m[d];
     for (std::size_t i = 0; i < vehicles.size() && i < before.size(); ++i) {
       const Vehicle& v = vehicles[i];
-      if (!(before[i] < x && v.s_m >= x)) continue;
-      double& last = last_crossing_time_[d][static_cast<std::size_t>(v.lane)];
-      crossings_[d].push_back({time_s(), v.lane, v.speed_mps, v.driver.desired_speed_mps(), v.type_index, v.id,
-                               time_s() - last});
+      const bool crossed = v.direction == Direction::kForward ? (before[i] < x && v.s_m >= x)
+                                                              : (before[i] > x && v.s_m <= x);
+      if (!crossed) continue;
+      const std::size_t slot = std::min(static_cast<std::size_t>(std::max(0, v.lane)), slots - 1);
+      double& last = last_crossing_time_[d][dir_index(v.direction) * slots + slot];
+      crossings_[d].push_back({time_s(), v.direction, v.lane, v.speed_mps, v.driver.desired_speed_mps(),
+                               v.type_index, v.id, time_s() - last});
       last = time_s();
     }
   }
 }
 
 void RoadSim::remove_finished() {
-  exits_ = fleet_.extract_if([&](const Vehicle& v) { return v.s_m > config_.length_m; });
+  const double length = scenario_.road.length_m;
+  exits_ = fleet_.extract_if([&](const Vehicle& v) {
+    return (v.direction == Direction::kForward && v.s_m > length) || (v.direction == Direction::kBackward && v.s_m < 0.0);
+  });
+  counters_.left += exits_.size();
 }
 
 }  // namespace entourage

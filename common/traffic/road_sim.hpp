@@ -1,16 +1,20 @@
 #pragma once
-// A whole straight road simulated microscopically, without a moving window: vehicles of one
-// direction's demand enter at s = 0 (Poisson arrivals at the demanded flow, desired speeds and
-// types from the demand) and leave at the end; detectors at fixed positions record every
-// crossing. The same driving functions as the inner region (IDM, MOBIL, lane changes over time).
+// A whole road simulated microscopically, without a moving window: the micro region's driving
+// (car following with speed adaptation and the HDM, MOBIL and mandatory lane changes, overtaking
+// in the oncoming lane) on a road with sources at its ends. Vehicles of a direction's demand
+// enter at its upstream end (Poisson arrivals at the demanded flow, types and basic desired speeds
+// from the demand; a queue forms when the entrance is full) and leave at the other end; detectors
+// at fixed positions record every crossing.
 //
-// Used to learn the stationary stream the model produces at a demand (generator calibration),
-// for fundamental diagrams, and for benchmarks against other simulators. Pure: no clock, threads
-// or I/O; all draws from its seeded stream.
+// Used to learn the stationary stream the model produces at a demand (generator calibration), for
+// fundamental diagrams, and for benchmarks against other simulators (entourage-roadsim). Pure: no
+// clock, threads or I/O; all draws from its seeded stream.
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "core/random.hpp"
@@ -24,6 +28,7 @@ namespace entourage {
 
 struct Crossing {
   double time_s = 0.0;
+  Direction direction = Direction::kForward;
   int lane = 0;
   double speed_mps = 0.0;
   double desired_speed_mps = 0.0;
@@ -33,32 +38,64 @@ struct Crossing {
 };
 
 struct RoadSimConfig {
+  // The road: the scenario's own (its length, curves, speed zones, restrictions and closures) or,
+  // by default, a straight road of length_m with the scenario's lanes, limit and kind: the
+  // reference conditions the demand's desired speeds are stated for.
+  bool scenario_road = false;
   double length_m = 8000.0;
-  std::vector<double> detectors_m;
+  std::vector<double> detectors_m;  // positions along s
+  bool forward = true;   // simulate the forward demand (entering at s = 0)
+  bool backward = false; // simulate the backward demand (entering at s = length)
   DrivingRules rules;
+};
+
+// Counts for reports.
+struct RoadSimCounters {
+  std::uint64_t entered = 0;
+  std::uint64_t left = 0;
+  std::uint64_t lane_changes = 0;
+  std::uint64_t overtakings_started = 0;
+  std::uint64_t overtakings_aborted = 0;
+  std::uint64_t emergency_decisions = 0;
 };
 
 class RoadSim {
  public:
-  // Simulates the demand of `demand_of` (its flow, mix and drivers) on a road with that
-  // direction's lanes, in the forward direction.
+  RoadSim(const ScenarioConfig& scenario, RoadSimConfig config, std::uint64_t seed);
+  // The demand of one direction only, on the reference road (generator calibration). On a road
+  // with oncoming traffic the opposite demand is simulated too, so that overtakings meet it.
   RoadSim(const ScenarioConfig& scenario, Direction demand_of, RoadSimConfig config, std::uint64_t seed);
 
   void step();
 
   double time_s() const { return static_cast<double>(steps_) * scenario_.step_s; }
+  double length_m() const { return scenario_.road.length_m; }
   std::size_t vehicles() const { return fleet_.size(); }
   std::uint64_t vehicle_updates() const { return updates_; }
-  std::size_t queued() const { return queue_.size(); }
+  std::size_t queued(Direction d) const { return source(d).queue.size(); }
+  std::size_t queued() const { return queued(Direction::kForward) + queued(Direction::kBackward); }
   const std::vector<Crossing>& crossings(std::size_t detector) const { return crossings_[detector]; }
   const Fleet& fleet() const { return fleet_; }
   // The vehicles that left the road's end in the last step, as they were when they left.
   const std::vector<Vehicle>& exits() const { return exits_; }
-  const StreamModel& demand() const { return stream_; }
+  const StreamModel& demand(Direction d) const { return *source(d).stream; }
+  const StreamModel& demand() const { return demand(Direction::kForward); }
+  const RoadSimCounters& counters() const { return counters_; }
+  const ScenarioConfig& scenario() const { return scenario_; }
 
  private:
+  struct Source {
+    bool active = false;
+    std::unique_ptr<StreamModel> stream;
+    std::deque<SpeedDraw> queue;
+    double accumulated = 0.0;
+    double next_arrival = 1.0;
+  };
+  Source& source(Direction d) { return sources_[d == Direction::kForward ? 0 : 1]; }
+  const Source& source(Direction d) const { return sources_[d == Direction::kForward ? 0 : 1]; }
+
   void arrive();
-  void enter();
+  void enter(Direction d);
   void perceive();
   void move();
   void detect(const std::vector<double>& before);
@@ -66,20 +103,25 @@ class RoadSim {
 
   ScenarioConfig scenario_;
   RoadSimConfig config_;
-  StreamModel stream_;
+  DrivingEnvironment env_;
   Random rng_;
   std::uint64_t seed_;
+  std::array<Source, 2> sources_;
   Fleet fleet_;
   LaneIndex index_;
-  std::deque<SpeedDraw> queue_;
-  double accumulated_ = 0.0;
-  double next_arrival_ = 1.0;
   VehicleId next_id_ = 1;
   std::uint64_t steps_ = 0;
   std::uint64_t updates_ = 0;
+  RoadSimCounters counters_;
+  std::vector<Decision> decisions_;
   std::vector<std::vector<Crossing>> crossings_;
-  std::vector<std::vector<double>> last_crossing_time_;  // per detector, per lane
+  std::vector<std::vector<double>> last_crossing_time_;  // per detector, per (direction, lane)
   std::vector<Vehicle> exits_;
 };
+
+// The scenario as the road simulation uses it: for the reference road, the road replaced by a
+// straight one of `length_m` (lanes, limit and kind kept; curves, zones, restrictions and closures
+// dropped).
+ScenarioConfig road_sim_scenario(const ScenarioConfig& scenario, const RoadSimConfig& config);
 
 }  // namespace entourage

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "behaviour/car_following.hpp"
+#include "behaviour/hdm.hpp"
 #include "behaviour/mobil.hpp"
 #include "behaviour/model_registry.hpp"
 #include "core/ids.hpp"
@@ -12,16 +13,22 @@
 namespace entourage {
 
 struct DriverParams {
-  CarFollowingParams car_following;  // car_following.idm.desired_speed_mps is the desired speed
+  // car_following.idm.desired_speed_mps is the driver's basic desired speed (for the road's
+  // reference conditions); speed adaptation (traffic/speed_sections.hpp) turns it into the
+  // desired speed at each place.
+  CarFollowingParams car_following;
   LaneChangeModel lane_change = LaneChangeModel::kMobil;
   MobilParams mobil;
   double lane_change_duration_s = 4.0;
-  double max_decel_mps2 = 8.0;        // physical braking limit of the vehicle
-  double desired_speed_factor = 1.0;  // basic desired speed / the road's base speed limit
-  bool keep_right = false;            // stays in the rightmost lane
-  std::uint64_t rng_state = 0;        // the driver's own random stream (SmallRandom)
+  double max_decel_mps2 = 8.0;             // physical braking limit of the vehicle
+  double desired_speed_median_mps = 0.0;   // median of the type's basic desired speeds (0: own)
+  bool keep_right = false;                 // stays in the rightmost lane
+  std::uint64_t rng_state = 0;             // the driver's own random stream (SmallRandom)
 
   double desired_speed_mps() const { return car_following.idm.desired_speed_mps; }
+  double basic_median_mps() const {
+    return desired_speed_median_mps > 0.0 ? desired_speed_median_mps : desired_speed_mps();
+  }
 };
 
 enum class LaneChangePhase : std::uint8_t { kNone = 0, kSignalling = 1, kMoving = 2 };
@@ -44,6 +51,28 @@ struct LaneChangeState {
 
 enum class Indicator : std::uint8_t { kOff = 0, kLeft = 1, kRight = 2 };
 
+// An overtaking on a two-lane road (behaviour/overtaking.hpp, traffic/overtaking_manoeuvre.hpp).
+// The lateral movements out and back are lane changes between the own lane and the oncoming lane
+// (lane numbers >= the direction's lane count are the oncoming carriageway, see lane_slot.hpp).
+enum class OvertakingPhase : std::uint8_t {
+  kNone = 0,
+  kPassing = 1,   // moving out or in the oncoming lane, gaining on the overtaken vehicles
+  kReturning = 2, // moving back in front of them
+  kAborting = 3,  // braking to return behind them
+};
+
+struct OvertakingState {
+  OvertakingPhase phase = OvertakingPhase::kNone;
+  std::uint8_t kind = 0;                 // OvertakingKind of the accepted decision
+  VehicleId overtaken = 0;               // the last (front-most) vehicle to pass
+  double elapsed_s = 0.0;                // since the overtaking started
+  double next_decision_s = 0.0;          // time until an accelerated overtaking is reconsidered
+  std::uint32_t started = 0;             // overtakings this driver has started
+  std::uint32_t aborted = 0;             // of which aborted
+
+  bool active() const { return phase != OvertakingPhase::kNone; }
+};
+
 struct Vehicle {
   VehicleId id = 0;
   std::uint8_t type_index = 0;
@@ -55,7 +84,12 @@ struct Vehicle {
   double length_m = 4.5;
   double width_m = 1.8;
   LaneChangeState lane_change;
+  OvertakingState overtaking;
+  // A lane the vehicle must reach (a play asks for it); -1: none. Closed lanes ask by themselves.
+  int requested_lane = -1;
   DriverParams driver;
+  HdmErrors hdm_errors;                // the driver's current estimation errors (HDM)
+  HdmMemory hdm_memory;                // its recent decisions, for the reaction time (not handed over)
   std::uint32_t handoff_sequence = 0;  // number of ownership changes so far
 
   // Position along the direction of travel: larger means further ahead, for both directions.

@@ -45,7 +45,12 @@ Vehicle sample_vehicle() {
   v.driver.mobil = {0.4, 0.15, 0.25, 3.5};
   v.driver.max_decel_mps2 = 6.0;
   v.driver.lane_change_duration_s = 4.5;
-  v.driver.desired_speed_factor = 0.83;
+  v.driver.desired_speed_median_mps = 27.5;
+  v.driver.car_following.gipps = {0.7, 3.2, 2.9};
+  v.driver.car_following.human_driver = true;
+  v.driver.car_following.hdm = {0.5, 4, 0.12, 0.02, 15.0};
+  v.hdm_errors = {0.3, -1.2};
+  v.requested_lane = 1;
   v.driver.keep_right = true;
   v.driver.rng_state = 0xDEADBEEFULL;
   return v;
@@ -72,6 +77,14 @@ TEST(Convert, HandoffRoundTripKeepsTheWholeVehicle) {
   EXPECT_TRUE(b.driver.keep_right);
   EXPECT_EQ(b.driver.rng_state, 0xDEADBEEFULL);
   EXPECT_DOUBLE_EQ(b.lane_change.since_last_change_s, 12.0);
+  EXPECT_DOUBLE_EQ(b.driver.desired_speed_median_mps, 27.5);
+  EXPECT_DOUBLE_EQ(b.driver.car_following.gipps.max_decel_mps2, 3.2);
+  EXPECT_DOUBLE_EQ(b.driver.car_following.gipps.leader_decel_estimate_mps2, 2.9);
+  EXPECT_TRUE(b.driver.car_following.human_driver);
+  EXPECT_EQ(b.driver.car_following.hdm.anticipated_leaders, 4);
+  EXPECT_DOUBLE_EQ(b.driver.car_following.hdm.error_persistence_s, 15.0);
+  EXPECT_DOUBLE_EQ(b.hdm_errors.w_approach, -1.2);
+  EXPECT_EQ(b.requested_lane, 1);
   EXPECT_EQ(back.step, 77U);
   EXPECT_EQ(back.from, (ServiceId{Role::kMicro, 0}));
   EXPECT_EQ(back.to_role, Role::kMeso);
@@ -102,6 +115,11 @@ TEST(Convert, BadSamplesAreRefusedWithAReason) {
   msg::VehicleState lane = m;
   lane.lane(1);  // the backward direction has one lane
   EXPECT_NE(check(lane, limits())->find("lane 1"), std::string::npos);
+  SampleLimits two_way = limits();
+  two_way.two_way = true;  // on a rural road lane 1 of the backward direction is the oncoming lane
+  EXPECT_FALSE(check(lane, two_way).has_value());
+  lane.lane(3);
+  EXPECT_TRUE(check(lane, two_way).has_value());
   msg::VehicleState type = m;
   type.type_index(9);
   EXPECT_NE(check(type, limits())->find("vehicle type"), std::string::npos);

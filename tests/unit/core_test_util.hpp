@@ -18,6 +18,18 @@ inline ScenarioConfig freeway_scenario() {
   return l.config;
 }
 
+// A straight road of `lanes_forward` + `lanes_backward` lanes (two-way if rural), 10 km long,
+// 120 km/h, as a driving environment for hand-built situations.
+inline ScenarioConfig road_scenario(int lanes_forward, int lanes_backward, RoadKind kind = RoadKind::kFreeway) {
+  ScenarioConfig c;
+  c.road.kind = kind;
+  c.road.length_m = 10000.0;
+  c.road.lanes_forward = lanes_forward;
+  c.road.lanes_backward = lanes_backward;
+  c.road.speed_limit_mps = 120.0 / 3.6;
+  return c;
+}
+
 inline EgoObservation ego_at(Step step, double s_m, double speed_mps, int lane = 0) {
   EgoObservation e;
   e.step = step;

@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include "behaviour/mobil.hpp"
+#include "core_test_util.hpp"
 #include "traffic/driving.hpp"
+#include "traffic/lane_changes.hpp"
 #include "traffic/lane_index.hpp"
 
 namespace entourage {
@@ -57,6 +59,7 @@ TEST(Mobil, UnsafeChangeIsRefusedWhateverTheGain) {
 class LaneChangeSituation : public ::testing::Test {
  protected:
   LaneIndex index{2, 0};
+  DrivingEnvironment env{testing::road_scenario(2, 0)};
 
   Vehicle car(VehicleId id, int lane, double s, double v, double v0) {
     Vehicle c;
@@ -115,13 +118,13 @@ TEST_F(LaneChangeSituation, DecisionSignalsFirstThenMovesWhenSafe) {
   add(me);
   add(car(2, 0, 1040.0, 22.0, 22.0));
   index.sort();
-  DrivingRules rules;
-  Decision d = decide(me, index, rules, 0.1);
+  const DrivingRules& rules = env.rules();
+  Decision d = decide(me, index, env);
   ASSERT_EQ(d.lane_change.phase, LaneChangePhase::kSignalling);
   EXPECT_EQ(d.lane_change.to_lane, 1);
   me.lane_change = d.lane_change;
   me.lane_change.phase_elapsed_s = rules.signal_s;  // the indicator has been on long enough
-  d = decide(me, index, rules, 0.1);
+  d = decide(me, index, env);
   EXPECT_EQ(d.lane_change.phase, LaneChangePhase::kMoving);
 }
 
@@ -131,7 +134,7 @@ TEST_F(LaneChangeSituation, KeepRightVehiclesNeverMoveLeft) {
   add(truck);
   add(car(2, 0, 1030.0, 15.0, 15.0));
   index.sort();
-  const Decision d = decide(truck, index, DrivingRules{}, 0.1);
+  const Decision d = decide(truck, index, env);
   EXPECT_EQ(d.lane_change.phase, LaneChangePhase::kNone);
 }
 

@@ -23,7 +23,7 @@ constexpr ServiceId kMesoId{Role::kMeso, 0};
 
 Vehicle car(const ScenarioConfig& sc, VehicleId id, int lane, double s, double v, double v0) {
   Random rng(id);
-  DriverParams d = draw_driver(sc.vehicle_types[0], v0, sc.road.speed_limit_mps, id, rng);
+  DriverParams d = draw_driver(sc.vehicle_types[0], v0, id, rng);
   return make_vehicle(id, 0, sc.vehicle_types[0], Direction::kForward, lane, s, v, d);
 }
 

@@ -27,7 +27,10 @@ DriverParams ego_driver(const EgoConfig& e) {
 }  // namespace
 
 EgoCore::EgoCore(const ScenarioConfig& scenario)
-    : scenario_(scenario), road_(scenario.road), index_(scenario.road.lanes_forward, scenario.road.lanes_backward) {
+    : scenario_(scenario),
+      road_(scenario.road),
+      env_(scenario),
+      index_(scenario.road.lanes_forward, scenario.road.lanes_backward) {
   const EgoConfig& e = scenario.ego;
   self_.id = kEgoVehicleId;
   self_.direction = Direction::kForward;
@@ -69,13 +72,13 @@ EgoObservation EgoCore::step(Step step, const std::vector<ObservedVehicle>& worl
   if (scenario_.ego.driver.use_speed_profile) {
     const double target = profile_speed_mps(self_.s_m);
     self_.driver.car_following.idm.desired_speed_mps = std::max(kMinModelDesiredSpeed_mps, target);
-    d = decide(self_, index_, rules_, dt);
+    d = decide(self_, index_, env_);
     const IdmParams& p = self_.driver.car_following.idm;
     const double track = std::clamp((target - self_.speed_mps) / kProfileRelaxation_s, -p.comfort_decel_mps2,
                                     p.max_accel_mps2);
     d.accel_mps2 = std::min(d.accel_mps2, track);
   } else {
-    d = decide(self_, index_, rules_, dt);
+    d = decide(self_, index_, env_);
   }
   commit(self_, d, dt);
   return observe(step);

@@ -4,8 +4,9 @@
 //   idm            an IDM driver at a desired speed, changing lanes with MOBIL if enabled;
 //   speed_profile  a target speed over road position, followed with a bounded acceleration, with
 //                  IDM's interaction term keeping a safe gap to a leader.
-// It uses the same driving functions as the simulated vehicles (common/traffic/driving.hpp) and
-// sees the world as published at the previous step.
+// It uses the same driving functions as the simulated vehicles (common/traffic/driving.hpp),
+// slows for curves and lower limits like them (its desired speed is its basic one; no overtaking),
+// and sees the world as published at the previous step.
 
 #include <vector>
 
@@ -37,7 +38,7 @@ class EgoCore {
 
   ScenarioConfig scenario_;
   Road road_;
-  DrivingRules rules_;
+  DrivingEnvironment env_;
   Vehicle self_;
   LaneIndex index_;
 };

@@ -129,6 +129,10 @@ Vehicle GeneratorCore::make(const Vehicle& model, Direction dir, int lane, doubl
   v.lane_change = LaneChangeState{};
   v.lane_change.from_lane = v.lane_change.to_lane = lane;
   v.lane_change.duration_s = v.driver.lane_change_duration_s;
+  v.overtaking = OvertakingState{};
+  v.requested_lane = -1;
+  v.hdm_errors = HdmErrors{};
+  v.hdm_memory = HdmMemory{};
   v.driver.rng_state = Random::derived(seed_, kDriverStreamLabel ^ v.id).next_u64();
   add_to_index(index_, dir, lane, lane, v.id, progress_m, speed_mps, 0.0, v.length_m);
   index_.sort();

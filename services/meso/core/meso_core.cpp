@@ -4,6 +4,7 @@
 
 #include "meso/core/meso_lanes.hpp"
 #include "traffic/driving.hpp"
+#include "traffic/lane_changes.hpp"
 #include "meso/core/meso_model.hpp"
 
 namespace entourage::meso {
@@ -21,7 +22,8 @@ MesoCore::MesoCore(const ScenarioConfig& scenario, ServiceId self)
       self_(self),
       regions_(regions_of_instance(self.instance)),
       inbox_(Role::kMeso, regions_),
-      index_(scenario.road.lanes_forward, scenario.road.lanes_backward) {}
+      index_(scenario.road.lanes_forward, scenario.road.lanes_backward),
+      env_(scenario) {}
 
 bool MesoCore::serves(Region r) const { return std::find(regions_.begin(), regions_.end(), r) != regions_.end(); }
 
@@ -53,9 +55,15 @@ void start_lane_change(Vehicle& v, int lane) {
 }  // namespace
 
 Ahead MesoCore::ahead_of(const Vehicle& v) const {
-  const Occupant* leader = nearest_leader(v, index_);
-  if (leader == nullptr) return {};
-  return {std::max(0.0, gap_between(*leader, v.progress_m(), v.length_m)), leader->speed_mps};
+  Ahead out;
+  if (const Occupant* leader = nearest_leader(v, index_)) {
+    out = {std::max(0.0, gap_between(*leader, v.progress_m(), v.length_m)), leader->speed_mps};
+  }
+  const double to_closure = env_.ahead().distance_to_closure_m(v.direction, v.lane, v.s_m) - 0.5 * v.length_m;
+  if (to_closure < env_.rules().mandatory_lookahead_m && (out.gap_m < 0.0 || to_closure < out.gap_m)) {
+    out = {std::max(0.0, to_closure), 0.0};  // the closed lane ends there: a standing obstacle
+  }
+  return out;
 }
 
 const EquilibriumSpeed& MesoCore::equilibrium_of(const Vehicle& v) {
@@ -75,9 +83,14 @@ void MesoCore::move() {
   next.reserve(fleet_.size());
   for (const Vehicle& v : fleet_.vehicles()) {
     const Ahead ahead = ahead_of(v);
-    const MesoSpeed ms = next_speed(v, equilibrium_of(v), ahead, dt);
+    const double desired = env_.speeds().desired_speed_mps(v.direction, v.s_m, v.driver.desired_speed_mps(),
+                                                           v.driver.basic_median_mps());
+    const MesoSpeed ms = next_speed(v, equilibrium_of(v), ahead, desired, dt);
     if (ms.emergency) ++counters_.emergency_stops;
-    next.push_back({ms.speed_mps, choose_lane(v, index_, ahead.gap_m, lane_rules_)});
+    const int must = mandatory_target_lane(v, env_);
+    const std::optional<int> lane = choose_lane(v, index_, ahead.gap_m, lane_rules_, must);
+    if (lane && must >= 0) ++counters_.mandatory_lane_changes;
+    next.push_back({ms.speed_mps, lane});
   }
   auto& vehicles = fleet_.vehicles();
   for (std::size_t i = 0; i < vehicles.size(); ++i) {

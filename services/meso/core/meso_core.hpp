@@ -4,8 +4,9 @@
 // only the front or the rear one. Phases of a step:
 //   adopt     handoffs addressed to this meso instance join the fleet
 //   perceive  the lane index from the fleet, the rest of the world at step-1 and the ego
-//   move      every vehicle's next speed from its gap (meso_model.hpp) and lane choice
-//             (meso_lanes.hpp) from the same snapshot, then integrate
+//   move      every vehicle's next speed from its gap and its desired speed at its place
+//             (meso_model.hpp) and lane choice (meso_lanes.hpp) from the same snapshot, then
+//             integrate
 //   hand off  vehicles in the inner region go to micro, vehicles in a region this instance does
 //             not serve go to the meso that does, vehicles of the ego's direction beyond the front
 //             edge go on in the generator's front zone, other vehicles beyond the edges retire
@@ -18,6 +19,7 @@
 #include "meso/core/meso_model.hpp"
 #include "road/window.hpp"
 #include "scenario/config.hpp"
+#include "traffic/driving_environment.hpp"
 #include "traffic/fleet.hpp"
 #include "traffic/handoff.hpp"
 #include "traffic/lane_index.hpp"
@@ -33,6 +35,7 @@ struct Counters {
   std::uint64_t to_front_zone = 0;  // left ahead in the ego's direction: on to the generator
   std::uint64_t duplicate_handoffs = 0;
   std::uint64_t emergency_stops = 0;  // vehicle-steps where the floor-gap guard overrode braking
+  std::uint64_t mandatory_lane_changes = 0;
 };
 
 // The outer regions served by a meso instance (kMesoBoth, kMesoFront or kMesoRear).
@@ -51,7 +54,8 @@ class MesoCore {
   void adopt(const StepInput& in);
   void perceive(const StepInput& in);
   void move();
-  Ahead ahead_of(const Vehicle& v) const;  // the nearer leader of the lanes it occupies
+  // The nearer leader of the lanes it occupies, or the start of a closure of its lane.
+  Ahead ahead_of(const Vehicle& v) const;
   const EquilibriumSpeed& equilibrium_of(const Vehicle& v);
   StepOutput hand_off(const StepInput& in);
   bool serves(Region r) const;
@@ -63,6 +67,7 @@ class MesoCore {
   Fleet fleet_;
   LaneIndex index_;
   LaneRules lane_rules_;
+  DrivingEnvironment env_;
   std::unordered_map<VehicleId, EquilibriumSpeed> equilibrium_;  // per owned vehicle's driver
   Counters counters_;
 };

@@ -25,8 +25,15 @@ bool has_room(const Vehicle& v, const LaneIndex& index, int lane, double ahead_f
 
 }  // namespace
 
-std::optional<int> choose_lane(const Vehicle& v, const LaneIndex& index, double gap_ahead_m, const LaneRules& rules) {
-  if (v.lane_change.active() || v.lane_change.since_last_change_s < rules.min_interval_s) return std::nullopt;
+std::optional<int> choose_lane(const Vehicle& v, const LaneIndex& index, double gap_ahead_m, const LaneRules& rules,
+                               int must_target) {
+  if (v.lane_change.active()) return std::nullopt;
+  if (must_target >= 0) {
+    const Occupant* leader_there = nullptr;
+    if (has_room(v, index, must_target, 1.0, &leader_there)) return must_target;
+    return std::nullopt;
+  }
+  if (v.lane_change.since_last_change_s < rules.min_interval_s) return std::nullopt;
   if (v.driver.lane_change == LaneChangeModel::kNone) return std::nullopt;
   const IdmParams& p = v.driver.car_following.idm;
   const int lanes = index.lanes(v.direction);

@@ -9,6 +9,9 @@
 //   keep right  the lane to the right has room ahead for twice the safe gap, a leader there that
 //            would not hold it up, and room behind
 //
+//   must     its lane is closed ahead (or a play asks for another lane): towards `must_target` as
+//            soon as the lane there has room ahead and behind
+//
 // A change then takes the driver's lane-change duration with the same lateral profile as in the
 // inner region (the vehicle is in both lanes meanwhile), so a vehicle handed to micro mid-change
 // continues it seamlessly.
@@ -26,7 +29,9 @@ struct LaneRules {
   double keep_right_gap_factor = 2.0;   // room wanted ahead in the right lane, in safe gaps
 };
 
-// The lane `v` should start changing to now, if any.
-std::optional<int> choose_lane(const Vehicle& v, const LaneIndex& index, double gap_ahead_m, const LaneRules& rules);
+// The lane `v` should start changing to now, if any. `must_target` (>= 0) is a lane it must move
+// towards (traffic/lane_changes.hpp, mandatory_target_lane); -1 for none.
+std::optional<int> choose_lane(const Vehicle& v, const LaneIndex& index, double gap_ahead_m, const LaneRules& rules,
+                               int must_target = -1);
 
 }  // namespace entourage::meso

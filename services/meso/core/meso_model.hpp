@@ -5,6 +5,7 @@
 // at the speeds micro vehicles would have at the same gaps:
 //
 //   v_eq     = V_e(gap)                              (the desired speed v0 on a free road)
+//   v_eq     = min(v_eq, v0_local)                   (speed adaptation: limits, curves ahead)
 //   v_brake  = v_leader + sqrt(2 b (gap - s0))       (can still brake comfortably to the leader)
 //   v_next   = clamp(min(v_eq, v_brake), v - b_max dt, v + a dt), at least 0
 //   v_next   = min(v_next, (gap - s_floor) / dt)     never into the leader (emergency)
@@ -34,9 +35,11 @@ struct MesoSpeed {
   bool emergency = false;  // the floor-gap guard overrode the braking limit
 };
 
-inline MesoSpeed next_speed(const Vehicle& v, const EquilibriumSpeed& eq, const Ahead& ahead, double dt_s) {
+// `desired_speed_mps`: the driver's desired speed at its place (speed adaptation, look-ahead).
+inline MesoSpeed next_speed(const Vehicle& v, const EquilibriumSpeed& eq, const Ahead& ahead, double desired_speed_mps,
+                            double dt_s) {
   const IdmParams& p = v.driver.car_following.idm;
-  double target = p.desired_speed_mps;
+  double target = desired_speed_mps;
   if (ahead.gap_m >= 0.0) {
     const double room = std::max(0.0, ahead.gap_m - p.min_gap_m);
     target = std::min({target, eq.at(ahead.gap_m),

@@ -6,6 +6,7 @@ MicroCore::MicroCore(const ScenarioConfig& scenario, ServiceId self)
     : scenario_(scenario),
       self_(self),
       road_(scenario.road),
+      env_(scenario),
       inbox_(Role::kMicro, {Region::kInner}),
       index_(scenario.road.lanes_forward, scenario.road.lanes_backward) {}
 
@@ -29,7 +30,7 @@ void MicroCore::perceive(const StepInput& in) {
 std::vector<Decision> MicroCore::decide() const {
   std::vector<Decision> decisions;
   decisions.reserve(fleet_.size());
-  for (const Vehicle& v : fleet_.vehicles()) decisions.push_back(entourage::decide(v, index_, rules_, scenario_.step_s));
+  for (const Vehicle& v : fleet_.vehicles()) decisions.push_back(entourage::decide(v, index_, env_));
   return decisions;
 }
 
@@ -38,7 +39,13 @@ void MicroCore::move(const std::vector<Decision>& decisions) {
   for (std::size_t i = 0; i < vehicles.size(); ++i) {
     const Decision& d = decisions[i];
     if (d.emergency) ++counters_.emergency_decisions;
-    if (!vehicles[i].lane_change.active() && d.lane_change.active()) ++counters_.lane_changes_started;
+    const Vehicle& v = vehicles[i];
+    if (!v.lane_change.active() && d.lane_change.active() && !d.overtaking.active()) {
+      ++counters_.lane_changes_started;
+      if (d.mandatory_change) ++counters_.mandatory_lane_changes;
+    }
+    if (d.overtaking.started > v.overtaking.started) ++counters_.overtakings_started;
+    if (d.overtaking.aborted > v.overtaking.aborted) ++counters_.overtakings_aborted;
     commit(vehicles[i], d, scenario_.step_s);
   }
 }
@@ -50,8 +57,14 @@ StepOutput MicroCore::hand_off(const StepInput& in) {
   out.states.reserve(fleet_.size());
   for (const Vehicle& v : fleet_.vehicles()) out.states.push_back({v, w.region_of(v.s_m)});
 
-  auto leaving = fleet_.extract_if(
-      [&](const Vehicle& v) { return v.s_m < w.inner_rear_m - margin || v.s_m > w.inner_front_m + margin; });
+  auto beyond = [&](const Vehicle& v) { return v.s_m < w.inner_rear_m - margin || v.s_m > w.inner_front_m + margin; };
+  auto busy = [&](const Vehicle& v) {
+    return v.overtaking.active() || v.lane >= road_.lanes(v.direction) || v.target_lane() >= road_.lanes(v.direction);
+  };
+  for (const Vehicle& v : fleet_.vehicles()) {
+    if (beyond(v) && busy(v)) ++counters_.handoffs_deferred;
+  }
+  auto leaving = fleet_.extract_if([&](const Vehicle& v) { return beyond(v) && !busy(v); });
   for (const Vehicle& v : leaving) {
     const Region to = v.s_m < w.inner_rear_m ? Region::kOuterRear : Region::kOuterFront;
     Handoff h = make_handoff(v, in.step, self_, Role::kMeso, to, HandoffReason::kBorder);

@@ -8,7 +8,9 @@
 //   perceive  the lane index from the fleet, the rest of the world at step-1 and the ego
 //   decide    every driver's acceleration and lane change, from that same snapshot
 //   move      commit the decisions and integrate over dt
-//   hand off  vehicles beyond an inner border (plus hysteresis) go to meso
+//   hand off  vehicles beyond an inner border (plus hysteresis) go to meso, except one that is
+//             overtaking: it stays until it is back in its own lane (meso does not drive in the
+//             oncoming lane)
 
 #include <cstdint>
 #include <vector>
@@ -28,6 +30,10 @@ struct Counters {
   std::uint64_t adopted = 0;
   std::uint64_t handed_out = 0;
   std::uint64_t lane_changes_started = 0;
+  std::uint64_t mandatory_lane_changes = 0;
+  std::uint64_t overtakings_started = 0;
+  std::uint64_t overtakings_aborted = 0;
+  std::uint64_t handoffs_deferred = 0;  // vehicle-steps kept beyond a border while overtaking
   std::uint64_t emergency_decisions = 0;  // vehicle-steps in the emergency regime
   std::uint64_t duplicate_handoffs = 0;
 };
@@ -51,7 +57,7 @@ class MicroCore {
   ScenarioConfig scenario_;
   ServiceId self_;
   Road road_;
-  DrivingRules rules_;
+  DrivingEnvironment env_;
   HandoffInbox inbox_;
   Fleet fleet_;
   LaneIndex index_;

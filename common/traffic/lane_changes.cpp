@@ -1,0 +1,168 @@
+#include "traffic/lane_changes.hpp"
+
+#include "traffic/driving.hpp"
+
+namespace entourage {
+
+namespace {
+Occupant as_occupant(const Vehicle& v) { return Occupant{v.id, v.progress_m(), v.speed_mps, v.accel_mps2, v.length_m}; }
+
+// Acceleration another driver (speed `speed_mps`, progress `progress_m`, length `length_m`) would
+// have behind `leader`, estimated with the deciding driver's own parameters (a driver judges
+// others by how it would drive itself; this also keeps decisions independent of who owns whom).
+double estimated_accel(const CarFollowingParams& judge, double progress_m, double speed_mps, double length_m,
+                       const Occupant* leader) {
+  if (leader == nullptr) return car_following_accel_mps2(judge, speed_mps, nullptr);
+  const LeaderView lv{gap_between(*leader, progress_m, length_m), leader->speed_mps, leader->accel_mps2};
+  return car_following_accel_mps2(judge, speed_mps, &lv);
+}
+
+bool uses_lane_changes(const Vehicle& v) {
+  return v.driver.lane_change == LaneChangeModel::kMobil || v.driver.lane_change == LaneChangeModel::kOvertaking;
+}
+}  // namespace
+
+LaneChangeOption evaluate_lane_change(const Vehicle& v, const CarFollowingParams& cf, const LaneIndex& index,
+                                      int target) {
+  LaneChangeOption opt;
+  opt.target_lane = target;
+  const Occupant* lead_now = leader_of(v, index, v.lane);
+  const Occupant* lead_new = leader_of(v, index, target);
+  const Occupant* follow_new = index.follower(v.direction, target, v.progress_m(), v.id);
+  const Occupant* follow_old = index.follower(v.direction, v.lane, v.progress_m(), v.id);
+  const Occupant self = as_occupant(v);
+
+  // No overlap with the vehicles beside us in the target lane.
+  if (lead_new != nullptr && gap_between(*lead_new, v.progress_m(), v.length_m) <= 0.0) return opt;
+  if (follow_new != nullptr && gap_between(self, follow_new->progress_m, follow_new->length_m) <= 0.0) return opt;
+
+  MobilSituation s;
+  s.to_right = target < v.lane;
+  s.self_now_mps2 = accel_behind(v, cf, lead_now);
+  s.self_after_mps2 = accel_behind(v, cf, lead_new);
+  if (follow_new != nullptr) {
+    s.new_follower_now_mps2 =
+        estimated_accel(cf, follow_new->progress_m, follow_new->speed_mps, follow_new->length_m, lead_new);
+    s.new_follower_after_mps2 =
+        estimated_accel(cf, follow_new->progress_m, follow_new->speed_mps, follow_new->length_m, &self);
+  }
+  if (follow_old != nullptr) {
+    s.old_follower_now_mps2 =
+        estimated_accel(cf, follow_old->progress_m, follow_old->speed_mps, follow_old->length_m, &self);
+    s.old_follower_after_mps2 =
+        estimated_accel(cf, follow_old->progress_m, follow_old->speed_mps, follow_old->length_m, lead_now);
+  }
+  const MobilDecision d = mobil_decide(v.driver.mobil, s);
+  opt.safe = d.safe;
+  opt.advantage_mps2 = d.advantage_mps2;
+  return opt;
+}
+
+LaneChangeOption evaluate_lane_change(const Vehicle& v, const LaneIndex& index, int target) {
+  return evaluate_lane_change(v, v.driver.car_following, index, target);
+}
+
+bool lane_allowed(const Vehicle& v, int lane, const DrivingEnvironment& env) {
+  if (lane < 0 || lane >= env.lanes(v.direction)) return false;
+  if (v.driver.keep_right && lane > v.lane) return false;  // keep-right vehicles only move right
+  return !env.ahead().closed_within(v.direction, lane, v.s_m, env.rules().mandatory_lookahead_m);
+}
+
+int mandatory_target_lane(const Vehicle& v, const DrivingEnvironment& env) {
+  const int lanes = env.lanes(v.direction);
+  if (v.lane >= lanes) return -1;  // in the oncoming lane: the overtaking manoeuvre decides
+  if (v.requested_lane >= 0 && v.requested_lane < lanes && v.requested_lane != v.lane) {
+    return v.requested_lane < v.lane ? v.lane - 1 : v.lane + 1;
+  }
+  const double lookahead = env.rules().mandatory_lookahead_m;
+  if (!env.ahead().closed_within(v.direction, v.lane, v.s_m, lookahead)) return -1;
+  for (int target : {v.lane - 1, v.lane + 1}) {  // the right one first
+    if (target < 0 || target >= lanes) continue;
+    if (!env.ahead().closed_within(v.direction, target, v.s_m, lookahead)) return target;
+  }
+  return -1;  // every lane is closed: nowhere to go, the closure stops it
+}
+
+LaneChangeState start_moving(const Vehicle& v, int lane, double duration_s) {
+  LaneChangeState lc = v.lane_change;
+  lc.from_lane = v.lane;
+  lc.to_lane = lane;
+  lc.phase = LaneChangePhase::kMoving;
+  lc.phase_elapsed_s = 0.0;
+  lc.duration_s = duration_s;
+  return lc;
+}
+
+namespace {
+LaneChangeState start_signalling(const Vehicle& v, int target) {
+  LaneChangeState lc = v.lane_change;
+  lc.from_lane = v.lane;
+  lc.to_lane = target;
+  lc.phase = LaneChangePhase::kSignalling;
+  lc.phase_elapsed_s = 0.0;
+  lc.duration_s = v.driver.lane_change_duration_s;
+  return lc;
+}
+
+// MOBIL's best discretionary change, if any.
+std::optional<int> discretionary_target(const Vehicle& v, const CarFollowingParams& cf, const LaneIndex& index,
+                                        const DrivingEnvironment& env) {
+  LaneChangeOption best;
+  bool found = false;
+  for (int target : {v.lane - 1, v.lane + 1}) {  // right first: it wins ties
+    if (!lane_allowed(v, target, env)) continue;
+    const LaneChangeOption opt = evaluate_lane_change(v, cf, index, target);
+    if (opt.safe && opt.advantage_mps2 > 0.0 && (!found || opt.advantage_mps2 > best.advantage_mps2)) {
+      best = opt;
+      found = true;
+    }
+  }
+  if (!found) return std::nullopt;
+  return best.target_lane;
+}
+}  // namespace
+
+LaneChangePlan plan_lane_change(const Vehicle& v, const CarFollowingParams& cf, const LaneIndex& index,
+                                const DrivingEnvironment& env) {
+  const DrivingRules& rules = env.rules();
+  const double dt_s = env.dt_s();
+  LaneChangePlan plan{v.lane_change, false};
+  LaneChangeState& lc = plan.state;
+  const int mandatory = uses_lane_changes(v) ? mandatory_target_lane(v, env) : -1;
+  switch (lc.phase) {
+    case LaneChangePhase::kNone: {
+      lc.since_last_change_s += dt_s;
+      if (mandatory >= 0) {  // timing rules do not hold back a change that must happen
+        lc = start_signalling(v, mandatory);
+        plan.mandatory = true;
+        break;
+      }
+      if (!uses_lane_changes(v) || lc.since_last_change_s < rules.min_interval_s) break;
+      if (const auto target = discretionary_target(v, cf, index, env)) lc = start_signalling(v, *target);
+      break;
+    }
+    case LaneChangePhase::kSignalling: {
+      lc.phase_elapsed_s += dt_s;
+      if (lc.phase_elapsed_s < rules.signal_s) break;
+      const bool must = mandatory == lc.to_lane;
+      // A mandatory change goes as soon as it is safe; a discretionary one must still pay off.
+      const LaneChangeOption opt = evaluate_lane_change(v, cf, index, lc.to_lane);
+      if (opt.safe) {
+        lc.phase = LaneChangePhase::kMoving;
+        lc.phase_elapsed_s = 0.0;
+        plan.mandatory = must;
+      } else if (!must && lc.phase_elapsed_s >= rules.max_signal_wait_s) {
+        lc.phase = LaneChangePhase::kNone;  // give up; the interval restarts
+        lc.to_lane = lc.from_lane;
+        lc.since_last_change_s = 0.0;
+      }
+      break;
+    }
+    case LaneChangePhase::kMoving:
+      lc.phase_elapsed_s += dt_s;
+      break;
+  }
+  return plan;
+}
+
+}  // namespace entourage

@@ -1,0 +1,41 @@
+#pragma once
+// Lane changes within a direction's own lanes: MOBIL's discretionary changes (Kesting et al.
+// 2007) and mandatory ones (the lane is closed ahead, or a play asks for a lane), each with the
+// indicator on first and the lateral movement over time (thesis ch. 3.2).
+
+#include "traffic/driving_environment.hpp"
+#include "traffic/lane_index.hpp"
+#include "traffic/vehicle.hpp"
+
+namespace entourage {
+
+// MOBIL evaluation of a change from v.lane to `target` (no checks of timing or lane range), with
+// the driver's car-following parameters `cf`.
+struct LaneChangeOption {
+  int target_lane = 0;
+  bool safe = false;
+  double advantage_mps2 = 0.0;
+};
+LaneChangeOption evaluate_lane_change(const Vehicle& v, const CarFollowingParams& cf, const LaneIndex& index,
+                                      int target);
+LaneChangeOption evaluate_lane_change(const Vehicle& v, const LaneIndex& index, int target);
+
+// The lane `v` must move towards now (a closure of its lane ahead, or a requested lane), or -1.
+int mandatory_target_lane(const Vehicle& v, const DrivingEnvironment& env);
+
+// May `v` change into `lane` at its own choice (in range, not closed ahead, keep-right rule)?
+bool lane_allowed(const Vehicle& v, int lane, const DrivingEnvironment& env);
+
+struct LaneChangePlan {
+  LaneChangeState state;
+  bool mandatory = false;
+};
+
+// The next state of v's lane change (MOBIL or mandatory; none for drivers without lane changes).
+LaneChangePlan plan_lane_change(const Vehicle& v, const CarFollowingParams& cf, const LaneIndex& index,
+                                const DrivingEnvironment& env);
+
+// Starts the lateral movement from v.lane to `lane` over `duration_s` (no signalling phase).
+LaneChangeState start_moving(const Vehicle& v, int lane, double duration_s);
+
+}  // namespace entourage

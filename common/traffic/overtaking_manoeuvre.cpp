@@ -1,0 +1,271 @@
+#include "traffic/overtaking_manoeuvre.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/random.hpp"
+#include "traffic/driving.hpp"
+#include "traffic/lane_changes.hpp"
+
+namespace entourage {
+
+namespace {
+// A pass overtakes at most this many vehicles of a platoon at once.
+constexpr int kMaxPassedVehicles = 3;
+// Nobody starts a pass while a vehicle of its own direction uses the oncoming lane this close
+// ahead or behind (another overtaker; the time gap for one behind, at its speed).
+constexpr double kBusyLaneAhead_m = 150.0;
+constexpr double kBusyLaneBehind_s = 3.0;
+// An abort brakes at this multiple of the driver's comfortable deceleration (up to its limit).
+constexpr double kAbortBrakeFactor = 2.0;
+
+int oncoming_lane(const Vehicle& v, const DrivingEnvironment& env) { return env.lanes(v.direction); }
+int own_lane(const Vehicle& v, const DrivingEnvironment& env) { return env.lanes(v.direction) - 1; }
+
+const Occupant* find(const LaneIndex& index, Direction dir, int lane, VehicleId id) {
+  for (const Occupant& o : index.lane(dir, lane)) {
+    if (o.id == id) return &o;
+  }
+  return nullptr;
+}
+
+double return_gap_m(const OvertakingParams& p, const Vehicle& v, double speed_mps) {
+  return p.return_time_gap_s * speed_mps + v.driver.car_following.idm.min_gap_m;
+}
+
+// Is another vehicle of our direction using the oncoming lane near us?
+bool oncoming_lane_busy(const Vehicle& v, const LaneIndex& index, int lane) {
+  if (const Occupant* ahead = index.leader(v.direction, lane, v.progress_m(), v.id)) {
+    if (gap_between(*ahead, v.progress_m(), v.length_m) < kBusyLaneAhead_m) return true;
+  }
+  if (const Occupant* behind = index.follower(v.direction, lane, v.progress_m(), v.id)) {
+    const Occupant self{v.id, v.progress_m(), v.speed_mps, 0.0, v.length_m};
+    if (gap_between(self, behind->progress_m, behind->length_m) < kBusyLaneBehind_s * behind->speed_mps) return true;
+  }
+  return false;
+}
+
+double passing_speed_mps(const OvertakingParams& p, double desired_speed_mps) {
+  return p.speed_excess_ratio * desired_speed_mps;
+}
+
+// Lateral move back into the own lane if it has room now.
+bool can_return(const Vehicle& v, const CarFollowingParams& cf, const LaneIndex& index, const DrivingEnvironment& env) {
+  return evaluate_lane_change(v, cf, index, own_lane(v, env)).safe;
+}
+
+OvertakingStep consider_start(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env,
+                              double desired_speed_mps) {
+  const OvertakingParams& p = env.overtaking();
+  OvertakingStep out;
+  out.state = v.overtaking;
+  out.desired_speed_mps = desired_speed_mps;
+  out.rng_state = v.driver.rng_state;
+  out.state.next_decision_s = std::max(0.0, out.state.next_decision_s - env.dt_s());
+  if (out.state.next_decision_s > 0.0 || v.lane_change.active() || v.lane != own_lane(v, env)) return out;
+  const PassChain chain = pass_chain(v, index, p);
+  if (chain.first == nullptr || chain.gap_m > p.consider_gap_m || oncoming_lane_busy(v, index, oncoming_lane(v, env))) {
+    return out;
+  }
+  SmallRandom rng(v.driver.rng_state);
+  const double draw = rng.uniform();
+  out.rng_state = rng.state();
+  out.state.next_decision_s = p.decision_interval_s;
+  const OvertakingDecision d = decide_overtaking(p, overtaking_situation(v, chain, index, env, desired_speed_mps), draw);
+  if (!d.accepted()) return out;
+  out.state.phase = OvertakingPhase::kPassing;
+  out.state.kind = static_cast<std::uint8_t>(d.kind);
+  out.state.overtaken = chain.last->id;
+  out.state.elapsed_s = 0.0;
+  ++out.state.started;
+  out.started = true;
+  out.lateral_start = true;
+  out.lane_change = start_moving(v, oncoming_lane(v, env), p.lateral_s);
+  out.desired_speed_mps = passing_speed_mps(p, desired_speed_mps);
+  return out;
+}
+
+// The situation during a pass: the overtaken vehicle is the "leader", now beside or behind.
+OvertakingSituation pass_situation(const Vehicle& v, const Occupant& overtaken, const LaneIndex& index,
+                                   const DrivingEnvironment& env, double desired_speed_mps) {
+  PassChain chain;
+  chain.first = chain.last = &overtaken;
+  chain.count = 1;
+  chain.gap_m = gap_between(overtaken, v.progress_m(), v.length_m);
+  chain.length_m = overtaken.length_m;
+  chain.speed_mps = overtaken.speed_mps;
+  if (const Occupant* next = index.leader(v.direction, own_lane(v, env), overtaken.progress_m, overtaken.id)) {
+    chain.room_ahead_m = gap_between(*next, overtaken.progress_m, overtaken.length_m);
+  }
+  return overtaking_situation(v, chain, index, env, desired_speed_mps);
+}
+
+OvertakingStep continue_pass(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env,
+                             double desired_speed_mps) {
+  const OvertakingParams& p = env.overtaking();
+  OvertakingStep out;
+  out.state = v.overtaking;
+  out.state.elapsed_s += env.dt_s();
+  out.rng_state = v.driver.rng_state;
+  out.desired_speed_mps = passing_speed_mps(p, desired_speed_mps);
+  if (v.lane_change.active()) return out;  // still moving out
+  const CarFollowingParams cf = local_params(v, env);
+  const Occupant* overtaken = find(index, v.direction, own_lane(v, env), v.overtaking.overtaken);
+  if (overtaken == nullptr) {  // gone (left the region, or changed lane): return when there is room
+    if (can_return(v, cf, index, env)) {
+      out.state.phase = OvertakingPhase::kReturning;
+      out.lateral_start = true;
+      out.lane_change = start_moving(v, own_lane(v, env), p.lateral_s);
+    }
+    return out;
+  }
+  const OvertakingSituation s = pass_situation(v, *overtaken, index, env, desired_speed_mps);
+  const PassReview review = review_pass(p, s);
+  switch (review.action) {
+    case PassAction::kReturn:
+      if (can_return(v, cf, index, env)) {
+        out.state.phase = OvertakingPhase::kReturning;
+        out.lateral_start = true;
+        out.lane_change = start_moving(v, own_lane(v, env), p.lateral_s);
+      }
+      break;
+    case PassAction::kAbort:
+      out.state.phase = OvertakingPhase::kAborting;
+      ++out.state.aborted;
+      out.aborted = true;
+      break;
+    case PassAction::kContinue:
+      // Past the overtaken vehicle but no room in front of it: the pass takes in the next one.
+      if (relative_distance_to_pass_m(p, s) <= 0.0) {
+        if (const Occupant* next = index.leader(v.direction, own_lane(v, env), overtaken->progress_m, overtaken->id)) {
+          out.state.overtaken = next->id;
+        }
+      }
+      break;
+  }
+  return out;
+}
+
+OvertakingStep continue_abort(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env,
+                              double desired_speed_mps) {
+  const OvertakingParams& p = env.overtaking();
+  OvertakingStep out;
+  out.state = v.overtaking;
+  out.state.elapsed_s += env.dt_s();
+  out.rng_state = v.driver.rng_state;
+  out.desired_speed_mps = desired_speed_mps;
+  const CarFollowingParams cf = local_params(v, env);
+  const Occupant* overtaken = find(index, v.direction, own_lane(v, env), v.overtaking.overtaken);
+  const double behind_m = overtaken != nullptr ? gap_between(*overtaken, v.progress_m(), v.length_m) : 1e9;
+  if (behind_m >= cf.idm.min_gap_m && can_return(v, cf, index, env)) {
+    out.state.phase = OvertakingPhase::kReturning;
+    out.lateral_start = true;
+    out.lane_change = start_moving(v, own_lane(v, env), p.lateral_s);
+    return out;
+  }
+  const double brake_mps2 = std::min(v.driver.max_decel_mps2, kAbortBrakeFactor * cf.idm.comfort_decel_mps2);
+  if (overtaken == nullptr) return out;
+  if (behind_m < cf.idm.min_gap_m) {
+    out.accel_cap_mps2 = -brake_mps2;  // still beside it: drop back
+  } else {
+    const LeaderView lv{behind_m, overtaken->speed_mps, overtaken->accel_mps2};
+    out.accel_cap_mps2 = std::max(-brake_mps2, car_following_accel_mps2(cf, v.speed_mps, &lv));
+  }
+  return out;
+}
+
+OvertakingStep continue_return(const Vehicle& v, const DrivingEnvironment& env, double desired_speed_mps) {
+  OvertakingStep out;
+  out.state = v.overtaking;
+  out.state.elapsed_s += env.dt_s();
+  out.rng_state = v.driver.rng_state;
+  out.desired_speed_mps = desired_speed_mps;
+  if (!v.lane_change.active() && v.lane < env.lanes(v.direction)) {
+    out.state.phase = OvertakingPhase::kNone;  // back in the own lane
+    out.state.next_decision_s = env.overtaking().decision_interval_s;
+  } else if (v.overtaking.phase == OvertakingPhase::kReturning && v.lane >= env.lanes(v.direction)) {
+    out.desired_speed_mps = passing_speed_mps(env.overtaking(), desired_speed_mps);  // finishing the pass
+  }
+  return out;
+}
+}  // namespace
+
+bool overtakes(const Vehicle& v, const DrivingEnvironment& env) {
+  return env.two_way() && v.driver.lane_change == LaneChangeModel::kOvertaking;
+}
+
+PassChain pass_chain(const Vehicle& v, const LaneIndex& index, const OvertakingParams& p) {
+  PassChain c;
+  const auto& lane = index.lane(v.direction, v.lane);
+  const Occupant probe{v.id, v.progress_m(), 0.0, 0.0, 0.0};
+  auto it = std::upper_bound(lane.begin(), lane.end(), probe, [](const Occupant& a, const Occupant& b) {
+    return a.progress_m < b.progress_m || (a.progress_m == b.progress_m && a.id < b.id);
+  });
+  for (; it != lane.end(); ++it) {
+    if (it->id == v.id) continue;
+    if (c.first == nullptr) {
+      c.first = c.last = &*it;
+      c.count = 1;
+      c.gap_m = gap_between(*it, v.progress_m(), v.length_m);
+      c.speed_mps = it->speed_mps;
+      continue;
+    }
+    const double room = gap_between(*it, c.last->progress_m, c.last->length_m);
+    const double needed = v.length_m + return_gap_m(p, v, c.speed_mps);
+    if (room >= needed || c.count >= kMaxPassedVehicles) {
+      c.room_ahead_m = room;
+      break;
+    }
+    c.last = &*it;
+    ++c.count;
+    c.speed_mps = std::max(c.speed_mps, it->speed_mps);
+  }
+  if (c.first != nullptr) {
+    c.length_m = (c.last->progress_m + 0.5 * c.last->length_m) - (c.first->progress_m - 0.5 * c.first->length_m);
+  }
+  return c;
+}
+
+OvertakingSituation overtaking_situation(const Vehicle& v, const PassChain& chain, const LaneIndex& index,
+                                         const DrivingEnvironment& env, double desired_speed_mps) {
+  OvertakingSituation s;
+  const IdmParams& idm = v.driver.car_following.idm;
+  s.speed_mps = v.speed_mps;
+  s.desired_speed_mps = desired_speed_mps;
+  s.max_accel_mps2 = idm.max_accel_mps2;
+  s.length_m = v.length_m;
+  s.min_gap_m = idm.min_gap_m;
+  s.leader_gap_m = chain.gap_m;
+  s.leader_speed_mps = chain.speed_mps;
+  s.leader_length_m = chain.length_m;
+  s.room_ahead_of_leader_m = chain.room_ahead_m;
+  if (const Occupant* o = index.oncoming(v.direction, env.lanes(v.direction), v.progress_m())) {
+    s.oncoming_distance_m = std::max(0.0, oncoming_gap(*o, v.progress_m(), v.length_m));
+    s.oncoming_speed_mps = o->speed_mps;
+  }
+  s.sight_distance_m = env.ahead().sight_distance_m(v.direction, v.s_m);
+  s.restriction_free_m = env.ahead().restriction_free_m(v.direction, v.s_m);
+  return s;
+}
+
+OvertakingStep overtaking_step(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env,
+                               double desired_speed_mps) {
+  switch (v.overtaking.phase) {
+    case OvertakingPhase::kNone:
+      if (!overtakes(v, env)) break;
+      return consider_start(v, index, env, desired_speed_mps);
+    case OvertakingPhase::kPassing:
+      return continue_pass(v, index, env, desired_speed_mps);
+    case OvertakingPhase::kAborting:
+      return continue_abort(v, index, env, desired_speed_mps);
+    case OvertakingPhase::kReturning:
+      return continue_return(v, env, desired_speed_mps);
+  }
+  OvertakingStep out;
+  out.state = v.overtaking;
+  out.desired_speed_mps = desired_speed_mps;
+  out.rng_state = v.driver.rng_state;
+  return out;
+}
+
+}  // namespace entourage

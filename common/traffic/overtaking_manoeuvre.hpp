@@ -1,0 +1,57 @@
+#pragma once
+// The overtaking manoeuvre on a two-lane road with oncoming traffic, around the decision model of
+// behaviour/overtaking.hpp: when to ask the four questions (every decision interval while held
+// up, one draw per decision), which vehicles to pass (the leader and, when it drives in a tight
+// platoon, up to a few vehicles ahead of it until a gap big enough to return into), the moves out
+// and back as lateral movements between the own lane and the oncoming lane, the pass reviewed at
+// every step, and the abort: brake until behind the overtaken vehicle, then return as soon as the
+// own lane has room.
+//
+// Only drivers whose lane-change model is "overtaking", in the leftmost lane of their direction, on
+// a road with oncoming traffic (DrivingEnvironment::two_way) overtake.
+
+#include <cstdint>
+#include <limits>
+
+#include "traffic/driving_environment.hpp"
+#include "traffic/lane_index.hpp"
+#include "traffic/vehicle.hpp"
+
+namespace entourage {
+
+// The vehicles ahead in the own lane that a pass would overtake.
+struct PassChain {
+  const Occupant* first = nullptr;  // the leader
+  const Occupant* last = nullptr;   // the front-most vehicle to pass
+  int count = 0;
+  double gap_m = 0.0;                // from the overtaker's front to the first one's rear
+  double length_m = 0.0;             // from the first one's rear to the last one's front
+  double speed_mps = 0.0;            // the fastest of them
+  double room_ahead_m = std::numeric_limits<double>::infinity();  // in front of the last one
+};
+
+PassChain pass_chain(const Vehicle& v, const LaneIndex& index, const OvertakingParams& p);
+
+// The situation as the overtaking model sees it, for passing `chain` from the driver's position.
+OvertakingSituation overtaking_situation(const Vehicle& v, const PassChain& chain, const LaneIndex& index,
+                                         const DrivingEnvironment& env, double desired_speed_mps);
+
+struct OvertakingStep {
+  OvertakingState state;          // to commit
+  bool lateral_start = false;     // a lateral movement starts now (lane_change holds it)
+  LaneChangeState lane_change;
+  double desired_speed_mps = 0.0; // the desired speed for this step (the passing speed in a pass)
+  double accel_cap_mps2 = std::numeric_limits<double>::infinity();  // braking of an abort
+  std::uint64_t rng_state = 0;
+  bool started = false;
+  bool aborted = false;
+};
+
+// One step of the manoeuvre for `v`; `desired_speed_mps` is its desired speed at this place.
+OvertakingStep overtaking_step(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env,
+                               double desired_speed_mps);
+
+// Does this driver overtake in the oncoming lane here at all?
+bool overtakes(const Vehicle& v, const DrivingEnvironment& env);
+
+}  // namespace entourage
