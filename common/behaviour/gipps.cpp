@@ -21,8 +21,8 @@ double gipps_safe_speed_mps(const IdmParams& idm, const GippsParams& p, double s
   const double b = p.max_decel_mps2;
   const double tau = p.reaction_time_s;
   const double room_m = gap_m - idm.min_gap_m;  // dx - S
-  const double radicand = b * b * tau * tau -
-                          b * (2.0 * room_m - speed_mps * tau -
+  const double radicand = b * b * tau * tau +
+                          b * (2.0 * room_m - speed_mps * tau +
                                leader_speed_mps * leader_speed_mps / p.leader_decel_estimate_mps2);
   // A negative radicand means no speed is safe any more: stop.
   return std::max(0.0, -b * tau + std::sqrt(std::max(0.0, radicand)));

@@ -3,11 +3,13 @@
 // simulation", Transp. Res. B 15, 105-111). Over a reaction time tau a driver chooses the lower of
 //
 //   v_a = v + 2.5 a tau (1 - v / v0) sqrt(0.025 + v / v0)                       (free)
-//   v_b = -b tau + sqrt(b^2 tau^2 - b [2 (dx - S) - v tau - v_l^2 / b_hat])      (safe)
+//   v_b = -b tau + sqrt(b^2 tau^2 + b [2 (dx - S) - v tau + v_l^2 / b_hat])      (safe)
 //
 // with dx the distance between the fronts of leader and follower (gap + leader length), S the
-// leader's effective size (length + the minimum gap s0), b the driver's most severe braking (taken
-// positive here), b_hat its estimate of the leader's, v_l the leader's speed. Since
+// leader's effective size (length + the minimum gap s0), b the driver's most severe braking and
+// b_hat its estimate of the leader's (both positive here; Gipps writes them negative, which flips
+// the signs inside the root), v_l the leader's speed. v_b is the highest speed from which the
+// driver, reacting tau/2 late, still stops behind a leader that brakes at b_hat. Since
 // dx - S = gap - s0, the leader's length cancels. v0, a and s0 are the IDM parameters of the
 // driver (desired speed, maximum acceleration, minimum gap).
 //

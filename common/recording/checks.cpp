@@ -137,7 +137,8 @@ CheckResult check_no_overlap(const Tables& t, double ego_length_m, double ego_wi
       for (std::size_t b = a + 1; b < boxes.size(); ++b) {
         const double ds = boxes[b].s - boxes[a].s;
         if (ds >= boxes[a].half_length + boxes[b].half_length + 15.0) break;  // no longer vehicle than 30 m
-        if (boxes[a].direction != boxes[b].direction) continue;
+        // Both directions: on a two-lane road an overtaker in the oncoming lane meets oncoming
+        // traffic at the same d (a head-on collision is an overlap too).
         const bool long_overlap = ds < boxes[a].half_length + boxes[b].half_length - kTouchTolerance_m;
         const bool lat_overlap =
             std::abs(boxes[a].d - boxes[b].d) < boxes[a].half_width + boxes[b].half_width - kTouchTolerance_m;
@@ -148,7 +149,7 @@ CheckResult check_no_overlap(const Tables& t, double ego_length_m, double ego_wi
       }
     }
   });
-  return v.result("no_overlap", "no two vehicles overlap");
+  return v.result("no_overlap", "no two vehicles overlap (either direction)");
 }
 
 CheckResult check_ego_interacts(const Tables& t) {

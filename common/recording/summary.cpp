@@ -103,6 +103,28 @@ PastTheEgo measure_past_ego(const Tables& t, const ScenarioConfig& sc) {
   return p;
 }
 
+Manoeuvres count_manoeuvres(const Tables& t, const ScenarioConfig& sc) {
+  Manoeuvres m;
+  std::unordered_map<std::uint32_t, std::pair<std::uint64_t, int>> last;  // id -> (step, target lane)
+  std::unordered_set<std::uint32_t> overtakers;
+  for (const VehicleRow& r : t.vehicles) {
+    const int own = r.direction > 0 ? sc.road.lanes_forward : sc.road.lanes_backward;
+    auto it = last.find(r.id);
+    const bool moving = r.target_lane != r.lane;
+    if (moving && it != last.end() && it->second.first + 1 == r.step && it->second.second == r.lane) {
+      if (r.target_lane >= own) {
+        ++m.overtakings;
+        overtakers.insert(r.id);
+      } else if (r.lane < own) {
+        ++m.lane_changes;
+      }
+    }
+    last[r.id] = {r.step, r.target_lane};
+  }
+  m.overtakers = overtakers.size();
+  return m;
+}
+
 RunSummary summarize(const Recording& r, const Tables& t, const ScenarioConfig& sc, double spacing) {
   RunSummary s;
   s.steps = t.ego.empty() ? 0 : t.ego.back().step;
@@ -128,6 +150,7 @@ RunSummary summarize(const Recording& r, const Tables& t, const ScenarioConfig& 
   s.forward = measure_flow(t, sc, 1, spacing);
   s.backward = measure_flow(t, sc, -1, spacing);
   s.past_ego = measure_past_ego(t, sc);
+  s.manoeuvres = count_manoeuvres(t, sc);
   if (!t.ego.empty()) {
     double total = 0.0;
     for (const auto& e : t.ego) total += e.speed_mps;

@@ -43,6 +43,16 @@ struct PastTheEgo {
   double backward_veh_per_h = 0.0;
 };
 
+// Lateral manoeuvres seen in the recording: a lane change starts when a vehicle's target lane
+// leaves its lane; one into the oncoming carriageway starts an overtaking.
+struct Manoeuvres {
+  std::uint64_t lane_changes = 0;  // within the own carriageway
+  std::uint64_t overtakings = 0;   // moves into the oncoming lane
+  std::uint64_t overtakers = 0;    // vehicles that overtook at least once
+};
+
+Manoeuvres count_manoeuvres(const Tables& t, const ScenarioConfig& sc);
+
 struct RunSummary {
   std::uint64_t steps = 0;
   double simulated_s = 0.0;
@@ -56,6 +66,7 @@ struct RunSummary {
   FlowMeasurement forward;
   FlowMeasurement backward;
   PastTheEgo past_ego;
+  Manoeuvres manoeuvres;
   double ego_mean_speed_mps = 0.0;
   double ego_distance_m = 0.0;
 };

@@ -92,6 +92,7 @@ Tables tables_from(const Recording& r, const std::vector<std::string>& type_name
     row.region = to_string(static_cast<Region>(m.region()));
     row.direction = m.direction();
     row.lane = m.lane();
+    row.target_lane = m.target_lane();
     row.s_m = m.s_m();
     row.d_m = m.d_m();
     row.x_m = m.x_m();
@@ -184,6 +185,7 @@ std::optional<Tables> read_csv(const std::string& dir, std::string* error) {
     r.region = f[4];
     r.direction = std::stoi(f[5]);
     r.lane = std::stoi(f[6]);
+    r.target_lane = r.lane;
     r.s_m = std::stod(f[7]);
     r.d_m = std::stod(f[8]);
     r.x_m = std::stod(f[9]);

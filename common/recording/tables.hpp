@@ -19,6 +19,7 @@ struct VehicleRow {
   std::string region;  // outer_rear, inner, outer_front, outside
   int direction = 1;
   int lane = 0;
+  int target_lane = 0;  // = lane unless it moves sideways (not in the CSV export; read back as lane)
   double s_m = 0.0;
   double d_m = 0.0;
   double x_m = 0.0;

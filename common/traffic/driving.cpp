@@ -119,6 +119,10 @@ Longitudinal longitudinal(const Vehicle& v, const CarFollowingParams& cf, const 
       decided = std::min(decided, car_following_accel_mps2(cf, v.speed_mps, &standing));
     }
   }
+  // A slower section ahead (a lower limit, a curve): brake so as to arrive at its speed.
+  const double approach = env.speeds().approach_decel_needed_mps2(v.direction, v.s_m, v.speed_mps,
+                                                                  v.driver.desired_speed_mps(), v.driver.basic_median_mps());
+  if (approach >= env.speeds().params().approach_decel_mps2) decided = std::min(decided, -approach);
   Longitudinal out;
   out.decided_mps2 = decided;
   double a = hdm ? v.hdm_memory.delayed(decided, cf.hdm.reaction_time_s, env.dt_s()) : decided;

@@ -101,34 +101,54 @@ double SpeedSections::local_desired_speed_mps(double s_m, double basic_desired_m
   return adapted_desired_speed_mps(params_, at(s_m).conditions, basic_desired_mps, basic_median_mps);
 }
 
-double SpeedSections::desired_speed_mps(Direction dir, double s_m, double basic_desired_mps,
-                                        double basic_median_mps) const {
-  if (uniform_) return basic_desired_mps;
-  const double decel = params_.approach_decel_mps2;
-  double v = local_desired_speed_mps(s_m, basic_desired_mps, basic_median_mps);
-  // Looks at one section `distance_m` ahead; false once nothing further can lower v.
-  auto consider = [&](const SpeedSection& sec, double distance_m) {
-    if (approach_speed_mps(0.0, distance_m, decel) >= v) return false;
-    const double v_section =
-        adapted_desired_speed_mps(params_, sec.conditions, basic_desired_mps, basic_median_mps);
-    v = std::min(v, approach_speed_mps(v_section, distance_m, decel));
-    return true;
-  };
+template <typename Visit>
+void SpeedSections::for_each_ahead(Direction dir, double s_m, Visit visit) const {
   if (dir == Direction::kForward) {
     auto it = std::upper_bound(sections_.begin(), sections_.end(), s_m,
                                [](double s, const SpeedSection& sec) { return s < sec.start_m; });
     for (; it != sections_.end(); ++it) {
-      if (!consider(*it, it->start_m - s_m)) break;
+      if (!visit(*it, it->start_m - s_m)) return;
     }
   } else {
     auto it = std::lower_bound(sections_.begin(), sections_.end(), s_m,
                                [](const SpeedSection& sec, double s) { return sec.end_m < s; });
     while (it != sections_.begin()) {
       --it;
-      if (!consider(*it, s_m - it->end_m)) break;
+      if (!visit(*it, s_m - it->end_m)) return;
     }
   }
+}
+
+double SpeedSections::desired_speed_mps(Direction dir, double s_m, double basic_desired_mps,
+                                        double basic_median_mps) const {
+  if (uniform_) return basic_desired_mps;
+  const double decel = params_.approach_decel_mps2;
+  double v = local_desired_speed_mps(s_m, basic_desired_mps, basic_median_mps);
+  // Looks at one section `distance_m` ahead; false once nothing further can lower v.
+  for_each_ahead(dir, s_m, [&](const SpeedSection& sec, double distance_m) {
+    if (approach_speed_mps(0.0, distance_m, decel) >= v) return false;
+    const double v_section = adapted_desired_speed_mps(params_, sec.conditions, basic_desired_mps, basic_median_mps);
+    v = std::min(v, approach_speed_mps(v_section, distance_m, decel));
+    return true;
+  });
   return v;
+}
+
+double SpeedSections::approach_decel_needed_mps2(Direction dir, double s_m, double speed_mps, double basic_desired_mps,
+                                                 double basic_median_mps) const {
+  if (uniform_ || speed_mps <= 0.0) return 0.0;
+  // Beyond this distance even stopping needs less than approach_decel: nothing there matters.
+  const double reach_m = speed_mps * speed_mps / (2.0 * params_.approach_decel_mps2);
+  double needed = 0.0;
+  for_each_ahead(dir, s_m, [&](const SpeedSection& sec, double distance_m) {
+    if (distance_m > reach_m) return false;
+    const double v_section = adapted_desired_speed_mps(params_, sec.conditions, basic_desired_mps, basic_median_mps);
+    if (v_section < speed_mps) {
+      needed = std::max(needed, (speed_mps * speed_mps - v_section * v_section) / (2.0 * std::max(distance_m, 1e-3)));
+    }
+    return true;
+  });
+  return needed;
 }
 
 }  // namespace entourage

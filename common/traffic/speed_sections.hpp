@@ -36,11 +36,23 @@ class SpeedSections {
   // distance to it, approach_decel). Sections are scanned only as far as they can matter.
   double desired_speed_mps(Direction dir, double s_m, double basic_desired_mps, double basic_median_mps) const;
 
+  // The deceleration a driver at `speed_mps` needs now to be down to the desired speed of every
+  // slower section ahead when it reaches it: the largest (v^2 - v_section^2) / (2 distance); 0 if
+  // none. The driver brakes by it once it reaches approach_decel (traffic/driving.cpp), so that it
+  // arrives at a lower limit or a curve at the speed it drives there, however it approached.
+  double approach_decel_needed_mps2(Direction dir, double s_m, double speed_mps, double basic_desired_mps,
+                                    double basic_median_mps) const;
+
   // True when every section has the reference conditions (a straight road at its base limit and
   // reference width): every driver's desired speed is its basic one everywhere.
   bool uniform() const { return uniform_; }
 
  private:
+  // Calls visit(section, distance) for the sections ahead in the direction of travel, nearest
+  // first, until it returns false.
+  template <typename Visit>
+  void for_each_ahead(Direction dir, double s_m, Visit visit) const;
+
   SpeedAdaptationParams params_;
   std::vector<SpeedSection> sections_;
   bool uniform_ = true;

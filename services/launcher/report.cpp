@@ -76,6 +76,12 @@ bool print_report(const ReportInput& in, const recording::Recording& rec, std::o
   out << "  past the ego: " << pe.overtaking << " vehicles overtook it, it overtook " << pe.overtaken << ", it met "
       << pe.met << " oncoming; moving-observer flow " << f1(pe.forward_veh_per_h) << " veh/h forward, "
       << f1(pe.backward_veh_per_h) << " veh/h backward\n";
+  out << "  lane changes: " << s.manoeuvres.lane_changes;
+  if (in.scenario.road.kind == RoadKind::kRural) {
+    out << "; overtakings in the oncoming lane: " << s.manoeuvres.overtakings << " (by " << s.manoeuvres.overtakers
+        << " vehicles)";
+  }
+  out << "\n";
   if (in.realtime && !in.latencies_ms.empty()) {
     out << "  ego state to world state: median " << f1(percentile(in.latencies_ms, 0.5)) << " ms, 99th percentile "
         << f1(percentile(in.latencies_ms, 0.99)) << " ms, max " << f1(percentile(in.latencies_ms, 1.0)) << " ms over "

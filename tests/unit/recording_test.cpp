@@ -141,8 +141,8 @@ Tables clean_tables() {
   Tables t;
   for (std::uint64_t k = 1; k <= 5; ++k) {
     t.ego.push_back({k, 0.1 * k, 1000.0, -5.25, 0, 0, 0, 30.0, 0.0, 0, 4.6, 1.8});
-    VehicleRow behind{k, 0.1 * k, 1, "micro", "inner", 1, 0, 960.0, -5.25, 0, 0, 0, 30, 0, 4.5, 1.8, "car"};
-    VehicleRow ahead{k, 0.1 * k, 2, "micro", "inner", 1, 0, 1040.0, -5.25, 0, 0, 0, 30, 0, 4.5, 1.8, "car"};
+    VehicleRow behind{k, 0.1 * k, 1, "micro", "inner", 1, 0, 0, 960.0, -5.25, 0, 0, 0, 30, 0, 4.5, 1.8, "car"};
+    VehicleRow ahead{k, 0.1 * k, 2, "micro", "inner", 1, 0, 0, 1040.0, -5.25, 0, 0, 0, 30, 0, 4.5, 1.8, "car"};
     t.vehicles.push_back(behind);
     t.vehicles.push_back(ahead);
   }
@@ -167,6 +167,19 @@ TEST(Checks, SideBySideInNeighbouringLanesIsNoOverlap) {
   EXPECT_TRUE(find(check_invariants(t, 4.6, 1.8), "no_overlap").passed);
 }
 
+TEST(Checks, AHeadOnCollisionInTheOncomingLaneIsCaught) {
+  Tables t = clean_tables();
+  // An oncoming vehicle (direction -1) in the same lane as vehicle 2, 2 m from it, front to front.
+  VehicleRow oncoming = t.vehicles[5];
+  oncoming.id = 7;
+  oncoming.direction = -1;
+  oncoming.s_m = t.vehicles[5].s_m + 4.5 - 2.0;
+  t.vehicles.insert(t.vehicles.begin() + 6, oncoming);
+  EXPECT_FALSE(find(check_invariants(t, 4.6, 1.8), "no_overlap").passed);
+  t.vehicles[6].d_m = 1.75;  // in its own lane across the centre line: they pass each other
+  EXPECT_TRUE(find(check_invariants(t, 4.6, 1.8), "no_overlap").passed);
+}
+
 TEST(Checks, TwoOwnersInOneStepAreCaught) {
   Tables t = clean_tables();
   VehicleRow dup = t.vehicles[2];
@@ -177,7 +190,7 @@ TEST(Checks, TwoOwnersInOneStepAreCaught) {
 
 TEST(Checks, PopInAndVanishInTheInnerRegionAreCaught) {
   Tables t = clean_tables();
-  t.vehicles.push_back({3, 0.3, 9, "micro", "inner", 1, 1, 1100.0, -1.75, 0, 0, 0, 30, 0, 4.5, 1.8, "car"});
+  t.vehicles.push_back({3, 0.3, 9, "micro", "inner", 1, 1, 1, 1100.0, -1.75, 0, 0, 0, 30, 0, 4.5, 1.8, "car"});
   std::stable_sort(t.vehicles.begin(), t.vehicles.end(),
                    [](const VehicleRow& a, const VehicleRow& b) { return a.step < b.step; });
   const auto c = find(check_invariants(t, 4.6, 1.8), "no_pop_in");

@@ -1,0 +1,71 @@
+// The rural scenario end to end (every service a real process over DDS): vehicles overtake in the
+// oncoming lane, nobody collides head-on or otherwise, and traffic slows for the curve with its
+// lower limit.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "process_util.hpp"
+#include "recording/checks.hpp"
+#include "recording/recording.hpp"
+#include "recording/summary.hpp"
+#include "recording/tables.hpp"
+#include "scenario/loader.hpp"
+
+namespace entourage::testing {
+namespace {
+
+constexpr int kDomainRural = 120;
+
+TEST(Rural, OvertakingsInTheOncomingLaneWithoutCollisionsAndSlowerInTheCurve) {
+  const std::string dir = fresh_dir("rural");
+  const std::string scenario_path = source("scenarios/rural.pbtxt");
+  const CommandResult r = run_command(bin("entourage") + " run " + scenario_path + " --lockstep --quiet --domain " +
+                                      std::to_string(kDomainRural) + " --record " + dir + "/r.mcap");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(no_process_uses_domain(kDomainRural));
+
+  const auto sc = scenario::load_file(scenario_path);
+  ASSERT_TRUE(sc.ok());
+  std::string error;
+  const auto rec = recording::read_recording(dir + "/r.mcap", &error);
+  ASSERT_TRUE(rec) << error;
+  std::vector<std::string> types;
+  for (const auto& t : sc.config.vehicle_types) types.push_back(t.name);
+  const recording::Tables t = recording::tables_from(*rec, types);
+
+  for (const auto& c : recording::check_invariants(t, sc.config.ego.length_m, sc.config.ego.width_m)) {
+    EXPECT_TRUE(c.passed) << c.name << ": " << c.detail;  // no_overlap covers head-on collisions
+  }
+  const recording::Manoeuvres m = recording::count_manoeuvres(t, sc.config);
+  EXPECT_GE(m.overtakings, 3U) << "too few overtakings in five minutes of rural traffic";
+
+  // Vehicles in the curve (70 km/h zone, 3850-4650 m) drive slower than on the straight before it.
+  double in_curve = 0.0;
+  double straight = 0.0;
+  std::size_t n_curve = 0;
+  std::size_t n_straight = 0;
+  for (const auto& v : t.vehicles) {
+    if (v.region == "outside") continue;
+    if (v.s_m > 3950.0 && v.s_m < 4550.0) {
+      in_curve += v.speed_mps;
+      ++n_curve;
+    } else if (v.s_m > 2000.0 && v.s_m < 3000.0) {
+      straight += v.speed_mps;
+      ++n_straight;
+    }
+  }
+  ASSERT_GT(n_curve, 500U);
+  ASSERT_GT(n_straight, 500U);
+  EXPECT_LT(in_curve / n_curve, 72.0 / 3.6);
+  EXPECT_GT(straight / n_straight, in_curve / n_curve + 2.0);
+  for (const auto& e : t.ego) {
+    if (e.s_m > 3950.0 && e.s_m < 4550.0) {
+      EXPECT_LT(e.speed_mps, 72.0 / 3.6) << "the ego stand-in at " << e.s_m;
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace entourage::testing

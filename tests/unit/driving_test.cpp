@@ -1,0 +1,304 @@
+// A driver's whole decision in hand-built situations: speed adaptation, the Human Driver Model's
+// delay, mandatory lane changes at a closure, and the overtaking manoeuvre on a two-lane road
+// (start, pass, return; rejection; abort) stepped in a small world of a few vehicles.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "core_test_util.hpp"
+#include "traffic/driving.hpp"
+#include "traffic/lane_changes.hpp"
+#include "traffic/overtaking_manoeuvre.hpp"
+#include "traffic/world.hpp"
+
+namespace entourage {
+namespace {
+
+Vehicle car(VehicleId id, Direction dir, int lane, double s, double v, double v0,
+            LaneChangeModel lc = LaneChangeModel::kMobil) {
+  Vehicle c;
+  c.id = id;
+  c.direction = dir;
+  c.lane = lane;
+  c.s_m = s;
+  c.speed_mps = v;
+  c.length_m = 4.5;
+  c.driver.car_following.idm = {v0, 1.2, 1.5, 2.0, 2.0, 4.0};
+  c.driver.lane_change = lc;
+  c.driver.max_decel_mps2 = 9.0;
+  c.driver.rng_state = 1000 + id;
+  c.lane_change.from_lane = c.lane_change.to_lane = lane;
+  c.lane_change.since_last_change_s = 100.0;
+  return c;
+}
+
+Vehicle truck(VehicleId id, Direction dir, double s, double v) {
+  Vehicle t = car(id, dir, 0, s, v, v, LaneChangeModel::kNone);
+  t.length_m = 16.5;
+  t.driver.car_following.idm.max_accel_mps2 = 0.5;
+  return t;
+}
+
+// A few vehicles stepped with the same phases as the micro region: index, decide all, commit all.
+struct MiniWorld {
+  explicit MiniWorld(const ScenarioConfig& sc)
+      : env(sc), index(sc.road.lanes_forward, sc.road.lanes_backward) {}
+
+  void build_index() {
+    index.clear();
+    for (const Vehicle& v : vehicles) {
+      add_to_index(index, v.direction, v.lane, v.target_lane(), v.id, v.progress_m(), v.speed_mps, v.accel_mps2,
+                   v.length_m);
+    }
+    index.sort();
+  }
+  std::vector<Decision> decide_all() {
+    build_index();
+    std::vector<Decision> d;
+    for (const Vehicle& v : vehicles) d.push_back(decide(v, index, env));
+    return d;
+  }
+  void step() {
+    const std::vector<Decision> d = decide_all();
+    for (std::size_t i = 0; i < vehicles.size(); ++i) commit(vehicles[i], d[i], env.dt_s());
+    check_no_overlap();
+  }
+  Vehicle& get(VehicleId id) {
+    for (Vehicle& v : vehicles) {
+      if (v.id == id) return v;
+    }
+    throw std::runtime_error("no such vehicle");
+  }
+  // Physical lane numbered from the forward direction's right edge, for both directions.
+  int physical(const Vehicle& v, int lane) const {
+    return v.direction == Direction::kForward ? lane : env.lanes(Direction::kForward) + env.lanes(Direction::kBackward) - 1 - lane;
+  }
+  bool shares_lane(const Vehicle& a, const Vehicle& b) const {
+    for (int la : {a.lane, a.target_lane()}) {
+      for (int lb : {b.lane, b.target_lane()}) {
+        if (physical(a, la) == physical(b, lb)) return true;
+      }
+    }
+    return false;
+  }
+  void check_no_overlap() {
+    for (std::size_t i = 0; i < vehicles.size(); ++i) {
+      for (std::size_t j = i + 1; j < vehicles.size(); ++j) {
+        const Vehicle& a = vehicles[i];
+        const Vehicle& b = vehicles[j];
+        if (!shares_lane(a, b)) continue;
+        const double apart = std::abs(a.s_m - b.s_m) - 0.5 * (a.length_m + b.length_m);
+        min_clearance_m = std::min(min_clearance_m, apart);
+        EXPECT_GT(apart, 0.0) << "vehicles " << a.id << " and " << b.id << " overlap at t = " << t();
+      }
+    }
+    ++steps;
+  }
+  double t() const { return steps * env.dt_s(); }
+
+  DrivingEnvironment env;
+  LaneIndex index;
+  std::vector<Vehicle> vehicles;
+  double min_clearance_m = std::numeric_limits<double>::infinity();
+  int steps = 0;
+};
+
+ScenarioConfig rural() { return testing::road_scenario(1, 1, RoadKind::kRural); }
+
+TEST(SpeedAdaptationInDriving, SlowsDownInTimeForALowerLimitAhead) {
+  ScenarioConfig sc = testing::road_scenario(1, 0);
+  sc.road.speed_zones.push_back({3000.0, 4000.0, 70.0 / 3.6});
+  MiniWorld w(sc);
+  w.vehicles.push_back(car(1, Direction::kForward, 0, 1000.0, 33.0, 33.3));
+  double speed_at_zone = -1.0;
+  while (w.get(1).s_m < 3500.0) {
+    w.step();
+    if (speed_at_zone < 0.0 && w.get(1).s_m >= 3000.0) speed_at_zone = w.get(1).speed_mps;
+  }
+  // The median driver of its own type (median = its own desired speed) drives at the limit.
+  EXPECT_LT(speed_at_zone, 70.0 / 3.6 + 1.0);
+  EXPECT_NEAR(w.get(1).speed_mps, 70.0 / 3.6, 0.5);
+}
+
+TEST(SpeedAdaptationInDriving, FastDriversAreSlowedMoreThanSlowOnes) {
+  ScenarioConfig sc = testing::road_scenario(1, 0);
+  sc.road.speed_zones.push_back({0.0, 10000.0, 90.0 / 3.6});
+  const DrivingEnvironment env(sc);
+  Vehicle fast = car(1, Direction::kForward, 0, 5000.0, 30.0, 140.0 / 3.6);
+  Vehicle slow = car(2, Direction::kForward, 0, 5000.0, 30.0, 100.0 / 3.6);
+  fast.driver.desired_speed_median_mps = slow.driver.desired_speed_median_mps = 120.0 / 3.6;
+  const double fast_loss = fast.driver.desired_speed_mps() - local_params(fast, env).idm.desired_speed_mps;
+  const double slow_loss = slow.driver.desired_speed_mps() - local_params(slow, env).idm.desired_speed_mps;
+  EXPECT_GT(fast_loss, slow_loss + 3.0);
+  EXPECT_GT(slow_loss, 0.0);
+}
+
+TEST(HumanDriverInDriving, TheAppliedAccelerationIsTheDecisionOfTheReactionTimeAgo) {
+  const ScenarioConfig sc = testing::road_scenario(1, 0);
+  const DrivingEnvironment env(sc);
+  Vehicle v = car(1, Direction::kForward, 0, 1000.0, 20.0, 30.0);
+  v.driver.car_following.human_driver = true;
+  v.driver.car_following.hdm.reaction_time_s = 0.3;
+  v.driver.car_following.hdm.distance_error = 0.0;
+  v.driver.car_following.hdm.inverse_ttc_error_per_s = 0.0;
+  for (double a : {0.1, 0.2, 0.3, 0.4}) v.hdm_memory.push(a);  // newest 0.4
+  LaneIndex index(1, 0);
+  add_to_index(index, Direction::kForward, 0, 0, 1, 1000.0, 20.0, 0.0, 4.5);
+  index.sort();
+  const Decision d = decide(v, index, env);
+  EXPECT_NEAR(d.hdm_decided_mps2, idm_free_accel_mps2(v.driver.car_following.idm, 20.0), 1e-12);
+  EXPECT_NEAR(d.accel_mps2, 0.2, 1e-6);  // three steps ago
+  Vehicle after = v;
+  commit(after, d, env.dt_s());
+  EXPECT_NEAR(after.hdm_memory.decided_mps2[0], d.hdm_decided_mps2, 1e-6);
+  EXPECT_NE(after.driver.rng_state, v.driver.rng_state);  // the error processes drew from the driver's stream
+}
+
+TEST(MandatoryLaneChange, LeavesAClosedLaneWithoutWaitingForTheInterval) {
+  ScenarioConfig sc = testing::road_scenario(2, 0);
+  sc.road.lane_closures.push_back({Direction::kForward, 0, 1400.0, 2000.0});
+  MiniWorld w(sc);
+  Vehicle v = car(1, Direction::kForward, 0, 1000.0, 25.0, 25.0);
+  v.lane_change.since_last_change_s = 0.0;  // just changed: a discretionary change would wait
+  w.vehicles.push_back(v);
+  const std::vector<Decision> d = w.decide_all();
+  EXPECT_EQ(d[0].lane_change.phase, LaneChangePhase::kSignalling);
+  EXPECT_EQ(d[0].lane_change.to_lane, 1);
+  EXPECT_TRUE(d[0].mandatory_change);
+  for (int i = 0; i < 200; ++i) w.step();
+  EXPECT_EQ(w.get(1).lane, 1);
+}
+
+TEST(MandatoryLaneChange, NobodyChangesIntoAClosedLane) {
+  ScenarioConfig sc = testing::road_scenario(2, 0);
+  sc.road.lane_closures.push_back({Direction::kForward, 0, 1400.0, 2000.0});
+  const DrivingEnvironment env(sc);
+  Vehicle v = car(1, Direction::kForward, 1, 1000.0, 25.0, 25.0);  // free, the right bias pulls right
+  EXPECT_FALSE(lane_allowed(v, 0, env));
+  v.s_m = 2100.0;  // past the closure
+  EXPECT_TRUE(lane_allowed(v, 0, env));
+}
+
+TEST(MandatoryLaneChange, StopsBeforeTheClosureWhenTheOtherLaneIsFull) {
+  ScenarioConfig sc = testing::road_scenario(2, 0);
+  sc.road.lane_closures.push_back({Direction::kForward, 0, 1300.0, 2000.0});
+  MiniWorld w(sc);
+  w.vehicles.push_back(car(1, Direction::kForward, 0, 1000.0, 20.0, 25.0));
+  // A column of stopped vehicles beside it in lane 1, past the closure, with no gap to merge into.
+  for (VehicleId id = 2; id < 110; ++id) {
+    Vehicle q = car(id, Direction::kForward, 1, 850.0 + 6.0 * (id - 2), 0.0, 0.1, LaneChangeModel::kNone);
+    w.vehicles.push_back(q);
+  }
+  for (int i = 0; i < 600; ++i) w.step();
+  EXPECT_EQ(w.get(1).lane, 0);
+  EXPECT_LT(w.get(1).s_m + 0.5 * w.get(1).length_m, 1300.0);
+  EXPECT_NEAR(w.get(1).speed_mps, 0.0, 0.05);
+}
+
+TEST(Overtaking, PassesASlowTruckOnAnEmptyRoadAndReturns) {
+  MiniWorld w(rural());
+  w.vehicles.push_back(car(1, Direction::kForward, 0, 1000.0, 22.0, 25.0, LaneChangeModel::kOvertaking));
+  w.vehicles.push_back(truck(2, Direction::kForward, 1040.0, 16.0));
+  bool used_oncoming_lane = false;
+  double top_speed = 0.0;
+  for (int i = 0; i < 400; ++i) {
+    w.step();
+    used_oncoming_lane |= w.get(1).target_lane() == 1;
+    top_speed = std::max(top_speed, w.get(1).speed_mps);
+  }
+  EXPECT_TRUE(used_oncoming_lane);
+  EXPECT_EQ(w.get(1).lane, 0);
+  EXPECT_FALSE(w.get(1).overtaking.active());
+  EXPECT_EQ(w.get(1).overtaking.started, 1U);
+  EXPECT_GT(w.get(1).s_m, w.get(2).s_m + 10.0);
+  EXPECT_GT(top_speed, 25.0);  // may exceed its desired speed while passing
+}
+
+TEST(Overtaking, RejectedWhileAnOncomingCarIsClose) {
+  MiniWorld w(rural());
+  w.vehicles.push_back(car(1, Direction::kForward, 0, 1000.0, 16.0, 25.0, LaneChangeModel::kOvertaking));
+  w.vehicles.push_back(truck(2, Direction::kForward, 1030.0, 16.0));
+  w.vehicles.push_back(car(3, Direction::kBackward, 0, 1350.0, 25.0, 25.0, LaneChangeModel::kNone));
+  for (int i = 0; i < 40; ++i) {
+    w.step();
+    EXPECT_EQ(w.get(1).target_lane(), 0) << "t = " << w.t();
+  }
+  EXPECT_EQ(w.get(1).overtaking.started, 0U);
+}
+
+TEST(Overtaking, AbortsWhenAnOncomingCarAppearsAndReturnsBehindWithoutAHeadOnCollision) {
+  MiniWorld w(rural());
+  w.vehicles.push_back(car(1, Direction::kForward, 0, 1000.0, 18.0, 25.0, LaneChangeModel::kOvertaking));
+  w.vehicles.push_back(truck(2, Direction::kForward, 1030.0, 16.0));
+  while (w.get(1).overtaking.phase != OvertakingPhase::kPassing || w.get(1).lane_change.active()) {
+    w.step();
+    ASSERT_LT(w.t(), 20.0) << "the pass never started";
+  }
+  // Now in the oncoming lane, still behind the truck's front: a car comes round the bend.
+  const Vehicle& me = w.get(1);
+  ASSERT_LT(me.s_m, w.get(2).s_m);
+  w.vehicles.push_back(car(3, Direction::kBackward, 0, me.s_m + 220.0, 25.0, 25.0, LaneChangeModel::kNone));
+  bool aborted = false;
+  while (!aborted || w.get(1).overtaking.active()) {
+    w.step();
+    aborted |= w.get(1).overtaking.phase == OvertakingPhase::kAborting;
+    ASSERT_LT(w.t(), 60.0) << "the overtaker neither aborted nor returned";
+  }
+  EXPECT_EQ(w.get(1).overtaking.aborted, 1U);
+  EXPECT_EQ(w.get(1).lane, 0);
+  EXPECT_LT(w.get(1).s_m, w.get(2).s_m);  // back behind the truck
+  for (int i = 0; i < 300; ++i) w.step();  // the oncoming car passes; it may try again later
+  EXPECT_GT(w.min_clearance_m, 0.0);
+}
+
+TEST(Overtaking, NoOvertakingInARestrictedZoneOrOnAFreeway) {
+  ScenarioConfig sc = rural();
+  sc.road.no_overtaking.push_back({900.0, 1800.0, true, true});
+  MiniWorld w(sc);
+  w.vehicles.push_back(car(1, Direction::kForward, 0, 1000.0, 22.0, 25.0, LaneChangeModel::kOvertaking));
+  w.vehicles.push_back(truck(2, Direction::kForward, 1040.0, 16.0));
+  for (int i = 0; i < 100; ++i) w.step();
+  EXPECT_EQ(w.get(1).overtaking.started, 0U);
+
+  const DrivingEnvironment freeway(testing::road_scenario(1, 1, RoadKind::kFreeway));
+  EXPECT_FALSE(overtakes(w.get(1), freeway));
+}
+
+TEST(Overtaking, PassChainTakesInATightPlatoonUpToAGap) {
+  const DrivingEnvironment env(rural());
+  LaneIndex index(1, 1);
+  Vehicle me = car(1, Direction::kForward, 0, 1000.0, 20.0, 25.0, LaneChangeModel::kOvertaking);
+  add_to_index(index, Direction::kForward, 0, 0, 1, 1000.0, 20.0, 0.0, 4.5);
+  // Two trucks 8 m apart (too tight to return between), then 100 m of room.
+  add_to_index(index, Direction::kForward, 0, 0, 2, 1030.0, 16.0, 0.0, 16.5);
+  add_to_index(index, Direction::kForward, 0, 0, 3, 1054.5, 16.0, 0.0, 16.5);
+  add_to_index(index, Direction::kForward, 0, 0, 4, 1170.0, 16.0, 0.0, 4.5);
+  index.sort();
+  const PassChain c = pass_chain(me, index, env.overtaking());
+  ASSERT_NE(c.first, nullptr);
+  EXPECT_EQ(c.first->id, 2U);
+  EXPECT_EQ(c.last->id, 3U);
+  EXPECT_EQ(c.count, 2);
+  EXPECT_NEAR(c.gap_m, 30.0 - 0.5 * (4.5 + 16.5), 1e-9);
+  EXPECT_NEAR(c.length_m, (1054.5 + 8.25) - (1030.0 - 8.25), 1e-9);
+  EXPECT_NEAR(c.room_ahead_m, (1170.0 - 2.25) - (1054.5 + 8.25), 1e-9);
+}
+
+TEST(OncomingReaction, ADriverBrakesForAnOvertakerInItsLane) {
+  MiniWorld w(rural());
+  Vehicle intruder = car(1, Direction::kForward, 1, 1000.0, 25.0, 25.0, LaneChangeModel::kNone);
+  intruder.lane_change.from_lane = intruder.lane_change.to_lane = 1;
+  w.vehicles.push_back(intruder);  // stuck in the oncoming lane (forward lane 1 = backward lane 0)
+  w.vehicles.push_back(car(2, Direction::kBackward, 0, 1150.0, 25.0, 25.0, LaneChangeModel::kNone));
+  const std::vector<Decision> d = w.decide_all();
+  // 145.5 m apart closing at 50 m/s: within the 4 s reaction time, both brake hard.
+  EXPECT_LT(d[1].accel_mps2, -2.0);
+  EXPECT_LT(d[0].accel_mps2, -2.0);
+  for (int i = 0; i < 100; ++i) w.step();
+  EXPECT_GT(w.min_clearance_m, 0.0);
+}
+
+}  // namespace
+}  // namespace entourage
