@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs what Entourage needs to build, run and test, from Debian 12 packages only.
 # Idempotent: packages already installed are skipped; `apt-get update` runs at most once.
+#   deploy/setup.sh           what building, running and testing need
+#   deploy/setup.sh --bench   also what the benchmarks compare with and draw with: SUMO (the peer
+#                             simulator of entourage-bench-sumo) and gnuplot (entourage-bench-fd's PNG)
 set -euo pipefail
 
 packages=(
@@ -11,6 +14,12 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   zlib1g-dev procps
 )
+for arg in "$@"; do
+  case "$arg" in
+    --bench) packages+=(sumo gnuplot-nox) ;;
+    *) echo "setup: unknown option $arg (known: --bench)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

@@ -4,9 +4,11 @@
 namespace entourage {
 
 struct LeaderView {
-  double gap_m = 0.0;  // bumper to bumper
-  double speed_mps = 0.0;
-  double accel_mps2 = 0.0;
+  // No default values: an aggregate, so that arrays of views on the hot path cost nothing until
+  // they are filled. Initialise all three (LeaderView{gap, speed, accel}, or {} for zeros).
+  double gap_m;  // bumper to bumper
+  double speed_mps;
+  double accel_mps2;
 };
 
 }  // namespace entourage

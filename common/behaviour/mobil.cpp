@@ -2,9 +2,13 @@
 
 namespace entourage {
 
+bool mobil_safe(const MobilParams& p, double self_after_mps2, double new_follower_after_mps2) {
+  return new_follower_after_mps2 >= -p.safe_decel_mps2 && self_after_mps2 >= -p.safe_decel_mps2;
+}
+
 MobilDecision mobil_decide(const MobilParams& p, const MobilSituation& s) {
   MobilDecision d;
-  d.safe = s.new_follower_after_mps2 >= -p.safe_decel_mps2 && s.self_after_mps2 >= -p.safe_decel_mps2;
+  d.safe = mobil_safe(p, s.self_after_mps2, s.new_follower_after_mps2);
   const double own_gain = s.self_after_mps2 - s.self_now_mps2;
   const double others_gain = (s.new_follower_after_mps2 - s.new_follower_now_mps2) +
                              (s.old_follower_after_mps2 - s.old_follower_now_mps2);

@@ -38,4 +38,9 @@ struct MobilDecision {
 
 MobilDecision mobil_decide(const MobilParams& p, const MobilSituation& s);
 
+// MOBIL's safety criterion alone: neither the changing driver nor its new follower would have to
+// brake harder than the safe deceleration. A caller may test it first and skip the incentive
+// (whose accelerations cost more to compute) when it fails.
+bool mobil_safe(const MobilParams& p, double self_after_mps2, double new_follower_after_mps2);
+
 }  // namespace entourage

@@ -140,6 +140,7 @@ Handoff from_msg(const msg::Handoff& m) {
   v.lane_change.phase_elapsed_s = lc.phase_elapsed_s();
   v.lane_change.duration_s = lc.duration_s();
   v.lane_change.since_last_change_s = lc.since_last_change_s();
+  v.lane_change.decision_wait_s = lc.decision_wait_s();
   const msg::DriverRecord& d = m.driver();
   DriverParams& p = v.driver;
   p.car_following.model = static_cast<CarFollowingModel>(d.car_following_model());
@@ -194,6 +195,7 @@ msg::Handoff to_msg(const Handoff& h, double time_s, const Road& road) {
   lc.phase_elapsed_s(v.lane_change.phase_elapsed_s);
   lc.duration_s(v.lane_change.duration_s);
   lc.since_last_change_s(v.lane_change.since_last_change_s);
+  lc.decision_wait_s(v.lane_change.decision_wait_s);
   const DriverParams& p = v.driver;
   msg::DriverRecord& d = m.driver();
   d.car_following_model(static_cast<uint8_t>(p.car_following.model));

@@ -56,7 +56,8 @@ void check_driver(const Cursor& c, const Driver& d) {
   check_optional_normal(c, "politeness", d.politeness(), 0.0, 1.0, false);
   check_optional_normal(c, "lane_change_duration_s", d.lane_change_duration_s(), 0.0, 15.0, true);
   c.range("accel_exponent", d.accel_exponent(), 0.0, 20.0, true);
-  c.range("beta", d.beta(), 1.0, 10.0);
+  // beta = 1 would cut the interaction off where it is largest (a jump at s = s*): above 1 only.
+  c.range("beta", d.beta(), 1.0, 10.0, true);
   c.range("change_threshold_mps2", d.change_threshold_mps2(), 0.0, 5.0);
   c.range("right_bias_mps2", d.right_bias_mps2(), -5.0, 5.0);
   c.range("safe_decel_mps2", d.safe_decel_mps2(), 0.0, 15.0, true);

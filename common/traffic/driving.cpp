@@ -40,10 +40,7 @@ Occupied occupied(const Vehicle& v) {
 // Up to `max` nearest leaders of v in `lane`, nearest first.
 std::size_t leaders_in(const Vehicle& v, const LaneIndex& index, int lane, LeaderView* out, std::size_t max) {
   const auto& l = index.lane(v.direction, lane);
-  const Occupant probe{v.id, v.progress_m(), 0.0, 0.0, 0.0};
-  auto it = std::upper_bound(l.begin(), l.end(), probe, [](const Occupant& a, const Occupant& b) {
-    return a.progress_m < b.progress_m || (a.progress_m == b.progress_m && a.id < b.id);
-  });
+  auto it = l.begin() + static_cast<std::ptrdiff_t>(index.first_not_behind(v.direction, lane, v.progress_m(), v.id));
   std::size_t n = 0;
   for (; it != l.end() && n < max; ++it) {
     if (it->id != v.id) out[n++] = view_of(*it, v);
@@ -98,7 +95,7 @@ Longitudinal longitudinal(const Vehicle& v, const CarFollowingParams& cf, const 
   const bool hdm = cf.human_driver;
   const std::size_t anticipate =
       hdm ? std::min<std::size_t>(kMaxAnticipated, static_cast<std::size_t>(std::max(1, cf.hdm.anticipated_leaders))) : 1;
-  std::array<LeaderView, kMaxAnticipated> views{};
+  std::array<LeaderView, kMaxAnticipated> views;  // filled up to the count leaders_in returns
   std::array<std::size_t, 2> counts{};
   std::array<LeaderView, 2> nearest{};
   std::array<Obstacle, 2> obstacles{};

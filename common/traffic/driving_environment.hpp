@@ -17,6 +17,11 @@ struct DrivingRules {
   double signal_s = 1.5;           // indicator on before the lateral movement starts
   double max_signal_wait_s = 4.0;  // a change that has not become safe by then is given up
   double min_interval_s = 5.0;     // from the end of one change to the decision on the next
+  // A driver weighs a discretionary change (MOBIL) this often, not at every simulation step: a
+  // decision rate of the driver, independent of the step, and well above the rate of mirror
+  // glances in free driving. Mandatory changes and the safety check of a signalled change are
+  // evaluated every step.
+  double decision_interval_s = 0.5;
   // A closed lane this close ahead makes leaving it mandatory (and keeps others out of it).
   double mandatory_lookahead_m = 600.0;
   // A driver brakes for an opposite-direction vehicle in its own lane (an overtaker that has not

@@ -26,8 +26,9 @@ std::optional<EntrySpot> find_entry(const LaneIndex& index, Direction dir, doubl
   const int lanes = index.lanes(dir);
   std::optional<EntrySpot> best;
   for (int lane = 0; lane < (type.keep_right ? std::min(1, lanes) : lanes); ++lane) {
-    const Occupant* leader = index.leader(dir, lane, progress_m, kNoVehicle);
-    const Occupant* follower = index.follower(dir, lane, progress_m, kNoVehicle);
+    const auto around = index.neighbours(dir, lane, progress_m, kNoVehicle);
+    const Occupant* leader = around.leader;
+    const Occupant* follower = around.follower;
     double v = speed_mps;
     if (leader != nullptr) {
       const double gap = gap_between(*leader, progress_m, type.length_m);

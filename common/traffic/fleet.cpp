@@ -41,7 +41,11 @@ std::size_t adopt_handoffs(Fleet& fleet, HandoffInbox& inbox, std::vector<Handof
 void build_index(LaneIndex& index, const Fleet& fleet, const std::vector<ObservedVehicle>& world,
                  const EgoObservation* ego) {
   index.clear();
-  for (const auto& v : fleet.vehicles()) {
+  // Latest-created first: vehicles created earlier are further along, so the lanes come out
+  // nearly in order of progress (cheap to sort).
+  const auto& vehicles = fleet.vehicles();
+  for (auto it = vehicles.rbegin(); it != vehicles.rend(); ++it) {
+    const Vehicle& v = *it;
     add_to_index(index, v.direction, v.lane, v.target_lane(), v.id, v.progress_m(), v.speed_mps, v.accel_mps2,
                  v.length_m);
   }

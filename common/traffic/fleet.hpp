@@ -1,6 +1,7 @@
 #pragma once
 // The vehicles a service owns, always in id order so that every phase iterates deterministically.
 
+#include <algorithm>
 #include <vector>
 
 #include "traffic/handoff.hpp"
@@ -24,10 +25,18 @@ class Fleet {
   template <typename Pred>
   std::vector<Vehicle> extract_if(Pred leaves) {
     std::vector<Vehicle> out;
-    std::vector<Vehicle> keep;
-    keep.reserve(vehicles_.size());
-    for (auto& v : vehicles_) (leaves(v) ? out : keep).push_back(std::move(v));
-    vehicles_ = std::move(keep);
+    auto first = std::find_if(vehicles_.begin(), vehicles_.end(), leaves);
+    if (first == vehicles_.end()) return out;  // the usual step: nobody leaves, nothing moves
+    auto kept = first;
+    for (auto it = first; it != vehicles_.end(); ++it) {
+      if (leaves(*it)) {
+        out.push_back(std::move(*it));
+      } else {
+        if (kept != it) *kept = std::move(*it);
+        ++kept;
+      }
+    }
+    vehicles_.erase(kept, vehicles_.end());
     return out;
   }
 

@@ -26,10 +26,12 @@ LaneChangeOption evaluate_lane_change(const Vehicle& v, const CarFollowingParams
                                       int target) {
   LaneChangeOption opt;
   opt.target_lane = target;
-  const Occupant* lead_now = leader_of(v, index, v.lane);
-  const Occupant* lead_new = leader_of(v, index, target);
-  const Occupant* follow_new = index.follower(v.direction, target, v.progress_m(), v.id);
-  const Occupant* follow_old = index.follower(v.direction, v.lane, v.progress_m(), v.id);
+  const auto now = index.neighbours(v.direction, v.lane, v.progress_m(), v.id);
+  const auto next = index.neighbours(v.direction, target, v.progress_m(), v.id);
+  const Occupant* lead_now = now.leader;
+  const Occupant* lead_new = next.leader;
+  const Occupant* follow_new = next.follower;
+  const Occupant* follow_old = now.follower;
   const Occupant self = as_occupant(v);
 
   // No overlap with the vehicles beside us in the target lane.
@@ -38,13 +40,17 @@ LaneChangeOption evaluate_lane_change(const Vehicle& v, const CarFollowingParams
 
   MobilSituation s;
   s.to_right = target < v.lane;
-  s.self_now_mps2 = accel_behind(v, cf, lead_now);
+  // The safety criterion first: an unsafe change is refused whatever its incentive.
   s.self_after_mps2 = accel_behind(v, cf, lead_new);
+  if (follow_new != nullptr) {
+    s.new_follower_after_mps2 =
+        estimated_accel(cf, follow_new->progress_m, follow_new->speed_mps, follow_new->length_m, &self);
+  }
+  if (!mobil_safe(v.driver.mobil, s.self_after_mps2, s.new_follower_after_mps2)) return opt;
+  s.self_now_mps2 = accel_behind(v, cf, lead_now);
   if (follow_new != nullptr) {
     s.new_follower_now_mps2 =
         estimated_accel(cf, follow_new->progress_m, follow_new->speed_mps, follow_new->length_m, lead_new);
-    s.new_follower_after_mps2 =
-        estimated_accel(cf, follow_new->progress_m, follow_new->speed_mps, follow_new->length_m, &self);
   }
   if (follow_old != nullptr) {
     s.old_follower_now_mps2 =
@@ -138,6 +144,11 @@ LaneChangePlan plan_lane_change(const Vehicle& v, const CarFollowingParams& cf, 
         break;
       }
       if (!uses_lane_changes(v) || lc.since_last_change_s < rules.min_interval_s) break;
+      if (lc.decision_wait_s > 0.5 * dt_s) {
+        lc.decision_wait_s -= dt_s;
+        break;
+      }
+      lc.decision_wait_s = rules.decision_interval_s - dt_s;
       if (const auto target = discretionary_target(v, cf, index, env)) lc = start_signalling(v, *target);
       break;
     }
@@ -145,7 +156,7 @@ LaneChangePlan plan_lane_change(const Vehicle& v, const CarFollowingParams& cf, 
       lc.phase_elapsed_s += dt_s;
       if (lc.phase_elapsed_s < rules.signal_s) break;
       const bool must = mandatory == lc.to_lane;
-      // A mandatory change goes as soon as it is safe; a discretionary one must still pay off.
+      // The decision was taken when the indicator went on: the change goes as soon as it is safe.
       const LaneChangeOption opt = evaluate_lane_change(v, cf, index, lc.to_lane);
       if (opt.safe) {
         lc.phase = LaneChangePhase::kMoving;

@@ -5,10 +5,34 @@
 namespace entourage {
 
 namespace {
-bool before(const Occupant& a, const Occupant& b) {
-  return a.progress_m < b.progress_m || (a.progress_m == b.progress_m && a.id < b.id);
-}
+// A function object, not a function pointer, so that sort and the searches inline it.
+struct Before {
+  bool operator()(const Occupant& a, const Occupant& b) const {
+    return a.progress_m < b.progress_m || (a.progress_m == b.progress_m && a.id < b.id);
+  }
+};
+constexpr Before before{};
+
 const std::vector<Occupant> kEmptyLane;
+
+// A lane is nearly in order from one step to the next (vehicles rarely pass within a lane), so an
+// insertion sort is linear; it hands over to std::sort when the order turns out to be far off.
+void sort_lane(std::vector<Occupant>& l) {
+  const std::size_t budget = 4 * l.size() + 16;
+  std::size_t moves = 0;
+  for (std::size_t i = 1; i < l.size(); ++i) {
+    if (!before(l[i], l[i - 1])) continue;
+    if (moves > budget) {
+      std::sort(l.begin(), l.end(), before);
+      return;
+    }
+    const Occupant o = l[i];
+    std::size_t j = i;
+    for (; j > 0 && before(o, l[j - 1]); --j, ++moves) l[j] = l[j - 1];
+    l[j] = o;
+  }
+}
+
 }  // namespace
 
 LaneIndex::LaneIndex(int lanes_forward, int lanes_backward)
@@ -33,8 +57,8 @@ void LaneIndex::add(Direction dir, int lane, const Occupant& o) {
 }
 
 void LaneIndex::sort() {
-  for (auto& l : forward_) std::sort(l.begin(), l.end(), before);
-  for (auto& l : backward_) std::sort(l.begin(), l.end(), before);
+  for (auto& l : forward_) sort_lane(l);
+  for (auto& l : backward_) sort_lane(l);
 }
 
 const std::vector<Occupant>& LaneIndex::lane(Direction dir, int lane) const {
@@ -67,25 +91,43 @@ const Occupant* LaneIndex::oncoming(Direction dir, int lane_no, double progress_
   return follower(opp, opp_slot, -progress_m, kNoVehicle);
 }
 
-const Occupant* LaneIndex::leader(Direction dir, int lane_no, double progress_m, VehicleId self) const {
+std::size_t LaneIndex::first_not_behind(Direction dir, int lane_no, double progress_m, VehicleId id) const {
   const auto& l = lane(dir, lane_no);
-  const Occupant probe{self, progress_m, 0.0, 0.0, 0.0};
-  auto it = std::upper_bound(l.begin(), l.end(), probe, before);
-  for (; it != l.end(); ++it) {
-    if (it->id != self) return &*it;
+  // By progress alone (a plain comparison of doubles, the hot loop of the whole simulation), then
+  // past the rare occupants at exactly the same progress with a smaller id.
+  auto it = std::lower_bound(l.begin(), l.end(), progress_m,
+                             [](const Occupant& a, double p) { return a.progress_m < p; });
+  while (it != l.end() && it->progress_m == progress_m && it->id < id) ++it;
+  return static_cast<std::size_t>(it - l.begin());
+}
+
+LaneIndex::Neighbours LaneIndex::neighbours(Direction dir, int lane_no, double progress_m, VehicleId self) const {
+  const auto& l = lane(dir, lane_no);
+  // Everything before `at` is behind the probe; from `at` on it is the probe itself or ahead.
+  const auto at = l.begin() + static_cast<std::ptrdiff_t>(first_not_behind(dir, lane_no, progress_m, self));
+  Neighbours n;
+  for (auto it = at; it != l.end(); ++it) {
+    if (it->id != self) {
+      n.leader = &*it;
+      break;
+    }
   }
-  return nullptr;
+  for (auto it = at; it != l.begin();) {
+    --it;
+    if (it->id != self) {
+      n.follower = &*it;
+      break;
+    }
+  }
+  return n;
+}
+
+const Occupant* LaneIndex::leader(Direction dir, int lane_no, double progress_m, VehicleId self) const {
+  return neighbours(dir, lane_no, progress_m, self).leader;
 }
 
 const Occupant* LaneIndex::follower(Direction dir, int lane_no, double progress_m, VehicleId self) const {
-  const auto& l = lane(dir, lane_no);
-  const Occupant probe{self, progress_m, 0.0, 0.0, 0.0};
-  auto it = std::lower_bound(l.begin(), l.end(), probe, before);
-  while (it != l.begin()) {
-    --it;
-    if (it->id != self) return &*it;
-  }
-  return nullptr;
+  return neighbours(dir, lane_no, progress_m, self).follower;
 }
 
 }  // namespace entourage

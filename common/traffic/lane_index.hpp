@@ -10,6 +10,7 @@
 // every slot; the vehicles of the other direction in the same physical lane are its oncoming
 // traffic (oncoming()).
 
+#include <cstddef>
 #include <vector>
 
 #include "core/ids.hpp"
@@ -36,8 +37,17 @@ class LaneIndex {
   // are broken by id so that the answer is deterministic.
   const Occupant* leader(Direction dir, int lane, double progress_m, VehicleId self) const;
   const Occupant* follower(Direction dir, int lane, double progress_m, VehicleId self) const;
+  // Both at once (one search).
+  struct Neighbours {
+    const Occupant* leader = nullptr;
+    const Occupant* follower = nullptr;
+  };
+  Neighbours neighbours(Direction dir, int lane, double progress_m, VehicleId self) const;
 
   const std::vector<Occupant>& lane(Direction dir, int lane) const;
+  // Position in lane(dir, lane) of the first occupant not behind (progress_m, id) in the index's
+  // order (progress, then id): the std::lower_bound of that position.
+  std::size_t first_not_behind(Direction dir, int lane, double progress_m, VehicleId id) const;
   int lanes(Direction dir) const;  // the direction's own lanes
   int slots(Direction dir) const;  // own lanes and the oncoming carriageway's
 

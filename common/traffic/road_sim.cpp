@@ -63,11 +63,10 @@ void RoadSim::step() {
   perceive();
   enter(Direction::kForward);
   enter(Direction::kBackward);
-  std::vector<double> before;
-  before.reserve(fleet_.size());
-  for (const auto& v : fleet_.vehicles()) before.push_back(v.s_m);
+  positions_before_.clear();
+  for (const auto& v : fleet_.vehicles()) positions_before_.push_back(v.s_m);
   move();
-  detect(before);
+  detect(positions_before_);
   remove_finished();
 }
 
@@ -105,6 +104,8 @@ void RoadSim::enter(Direction dir) {
     index_.sort();
     src.queue.pop_front();
     ++counters_.entered;
+    if (entry_time_s_.size() <= id) entry_time_s_.resize(id + 1, 0.0);
+    entry_time_s_[id] = time_s();
   }
 }
 
@@ -151,6 +152,12 @@ void RoadSim::remove_finished() {
     return (v.direction == Direction::kForward && v.s_m > length) || (v.direction == Direction::kBackward && v.s_m < 0.0);
   });
   counters_.left += exits_.size();
+  for (const Vehicle& v : exits_) {
+    const double travel_s = time_s() - entry_time_s_[v.id];
+    if (travel_s <= 0.0) continue;
+    ++counters_.trips;
+    counters_.trip_speed_sum_mps += length / travel_s;
+  }
 }
 
 }  // namespace entourage

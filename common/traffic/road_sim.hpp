@@ -57,6 +57,11 @@ struct RoadSimCounters {
   std::uint64_t overtakings_started = 0;
   std::uint64_t overtakings_aborted = 0;
   std::uint64_t emergency_decisions = 0;
+  // Trips from entrance to exit: their number and the sum of their mean speeds (road length over
+  // travel time), for a trip speed comparable with other simulators' statistics.
+  std::uint64_t trips = 0;
+  double trip_speed_sum_mps = 0.0;
+  double mean_trip_speed_mps() const { return trips > 0 ? trip_speed_sum_mps / static_cast<double>(trips) : 0.0; }
 };
 
 class RoadSim {
@@ -117,6 +122,8 @@ class RoadSim {
   std::vector<std::vector<Crossing>> crossings_;
   std::vector<std::vector<double>> last_crossing_time_;  // per detector, per (direction, lane)
   std::vector<Vehicle> exits_;
+  std::vector<double> entry_time_s_;
+  std::vector<double> positions_before_;  // s of each vehicle before the step's movement  // by vehicle id (ids are consecutive from 1)
 };
 
 // The scenario as the road simulation uses it: for the reference road, the road replaced by a

@@ -42,6 +42,8 @@ struct LaneChangeState {
   double phase_elapsed_s = 0.0;
   double duration_s = 4.0;
   double since_last_change_s = 1e9;
+  // Time until the driver next weighs a discretionary change (DrivingRules::decision_interval_s).
+  double decision_wait_s = 0.0;
 
   bool active() const { return phase != LaneChangePhase::kNone; }
   bool moving() const { return phase == LaneChangePhase::kMoving; }

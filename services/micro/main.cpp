@@ -7,7 +7,7 @@ namespace entourage {
 int micro_main(int argc, char** argv) {
   return dds::service_main(
       argc, argv, ServiceId{Role::kMicro, 0},
-      "The inner region: car following (IDM) and lane changes (MOBIL) of every vehicle near the ego.", nullptr,
+      "The inner region: car following (IDM, modified IDM, Gipps, with the Human Driver Model), lane changes (MOBIL, mandatory) and overtakings in the oncoming lane of every vehicle near the ego.", nullptr,
       [](const dds::ServiceContext& ctx) {
         micro::MicroCore core(ctx.scenario.config, ctx.id);
         return dds::run_region_service(ctx, core);

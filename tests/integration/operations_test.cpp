@@ -59,8 +59,9 @@ TEST(Operations, ASimulatorPublishingTheEgoStateReplacesTheStandIn) {
   const pid_t launcher = spawn({bin("entourage"), "run", scenario, "--realtime", "--external-ego", "--duration", "8",
                                 "--domain", domain, "--record", dir + "/x.mcap", "--quiet"},
                                dir + "/launcher.out");
-  // The "simulator": the stand-in started on its own, as a simulator would publish the topic.
-  const pid_t simulator = spawn({bin("entourage-ego"), "--scenario", scenario, "--mode", "realtime", "--duration", "9",
+  // The "simulator": the stand-in started on its own, as a simulator would publish the topic. It
+  // drives on well past the run (a loaded machine may take seconds to discover) and is stopped after.
+  const pid_t simulator = spawn({bin("entourage-ego"), "--scenario", scenario, "--mode", "realtime", "--duration", "60",
                                  "--domain", domain, "--peers", "ego,generator,micro,meso,director,recorder"},
                                 dir + "/simulator.out");
   EXPECT_EQ(wait_exit(launcher), 0) << file_bytes(dir + "/launcher.out");

@@ -38,7 +38,7 @@ Vehicle sample_vehicle() {
   v.length_m = 12.0;
   v.width_m = 2.5;
   v.handoff_sequence = 6;
-  v.lane_change = {0, 0, LaneChangePhase::kNone, 0.0, 4.5, 12.0};
+  v.lane_change = {0, 0, LaneChangePhase::kNone, 0.0, 4.5, 12.0, 0.3};
   v.driver.car_following.idm = {25.0, 1.7, 0.8, 1.6, 3.0, 4.0};
   v.driver.car_following.beta = 1.4;
   v.driver.lane_change = LaneChangeModel::kNone;
@@ -77,6 +77,7 @@ TEST(Convert, HandoffRoundTripKeepsTheWholeVehicle) {
   EXPECT_TRUE(b.driver.keep_right);
   EXPECT_EQ(b.driver.rng_state, 0xDEADBEEFULL);
   EXPECT_DOUBLE_EQ(b.lane_change.since_last_change_s, 12.0);
+  EXPECT_DOUBLE_EQ(b.lane_change.decision_wait_s, 0.3);
   EXPECT_DOUBLE_EQ(b.driver.desired_speed_median_mps, 27.5);
   EXPECT_DOUBLE_EQ(b.driver.car_following.gipps.max_decel_mps2, 3.2);
   EXPECT_DOUBLE_EQ(b.driver.car_following.gipps.leader_decel_estimate_mps2, 2.9);

@@ -10,8 +10,9 @@ double safe_gap_m(const IdmParams& p, double speed_mps) { return p.min_gap_m + s
 // there keeps its own safe gap. Returns the leader there (or nullptr) through `leader_out`.
 bool has_room(const Vehicle& v, const LaneIndex& index, int lane, double ahead_factor, const Occupant** leader_out) {
   const IdmParams& p = v.driver.car_following.idm;
-  const Occupant* leader = index.leader(v.direction, lane, v.progress_m(), v.id);
-  const Occupant* follower = index.follower(v.direction, lane, v.progress_m(), v.id);
+  const auto around = index.neighbours(v.direction, lane, v.progress_m(), v.id);
+  const Occupant* leader = around.leader;
+  const Occupant* follower = around.follower;
   *leader_out = leader;
   if (leader != nullptr && gap_between(*leader, v.progress_m(), v.length_m) < ahead_factor * safe_gap_m(p, v.speed_mps)) {
     return false;
