@@ -161,6 +161,7 @@ struct ScenarioConfig {
   std::vector<VehicleTypeConfig> vehicle_types;
   FlowConfig forward;
   FlowConfig backward;
+  double demand_regulation_gain = 4.0;  // see scenario.proto, Demand.regulation_gain
   EgoConfig ego;
   std::vector<PlayConfig> plays;
   SpeedAdaptationParams speed_adaptation;

@@ -188,6 +188,7 @@ ScenarioConfig resolve(const Scenario& s) {
   }
   c.forward = resolve_flow(s.demand().forward(), s);
   c.backward = resolve_flow(s.demand().backward(), s);
+  c.demand_regulation_gain = s.demand().regulation_gain();
   c.ego = resolve_ego(s.ego());
   std::uint32_t id = 1;
   for (const auto& p : s.play()) c.plays.push_back({id++, p.name(), p.trigger1_s_m(), p.trigger2_s_m()});

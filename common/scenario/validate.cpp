@@ -26,6 +26,7 @@ constexpr int kMaxLanes = 4;
 constexpr double kMinLaneWidth_m = 2.0;
 constexpr double kMaxLaneWidth_m = 6.0;
 constexpr double kMaxSpeedLimit_kph = 250.0;
+constexpr double kMaxRegulationGain = 50.0;  // beyond this the arrivals are a count controller
 constexpr double kMaxCurvature_per_m = 1.0 / 15.0;  // tighter than any road bend
 constexpr double kMaxVehicleLength_m = 30.0;
 constexpr double kMaxVehicleWidth_m = 3.5;
@@ -137,6 +138,7 @@ void check_demand(const Cursor& top, const Scenario& s, const std::set<std::stri
   const Cursor c = top.child(d, "demand");
   if (c.require("forward")) check_flow(c.child(d.forward(), "forward"), d.forward(), types, s.road().lanes_forward());
   if (c.has("backward")) check_flow(c.child(d.backward(), "backward"), d.backward(), types, s.road().lanes_backward());
+  c.range("regulation_gain", d.regulation_gain(), 0.0, kMaxRegulationGain);
 }
 
 double ego_top_speed_kph(const Ego& e) {

@@ -11,18 +11,23 @@ namespace {
 constexpr double kMinTimeGapShare = 0.5;
 }  // namespace
 
-double wanted_gap_m(const VehicleTypeConfig& type, double speed_mps, double leader_speed_mps) {
+IdmParams mean_idm(const VehicleTypeConfig& type) {
   IdmParams p;
   p.time_gap_s = type.driver.time_gap_s.mean;
   p.max_accel_mps2 = type.driver.max_accel_mps2.mean;
   p.comfort_decel_mps2 = type.driver.comfort_decel_mps2.mean;
   p.min_gap_m = type.driver.min_gap_m.mean;
+  return p;
+}
+
+double wanted_gap_m(const IdmParams& p, double speed_mps, double leader_speed_mps) {
   return std::max(idm_desired_gap_m(p, speed_mps, speed_mps - leader_speed_mps),
                   p.min_gap_m + kMinTimeGapShare * speed_mps * p.time_gap_s);
 }
 
 std::optional<EntrySpot> find_entry(const LaneIndex& index, Direction dir, double progress_m, double speed_mps,
-                                    const VehicleTypeConfig& type, int preferred_lane) {
+                                    const VehicleTypeConfig& type, const IdmParams& driver, int preferred_lane,
+                                    EntryPolicy policy) {
   const int lanes = index.lanes(dir);
   std::optional<EntrySpot> best;
   for (int lane = 0; lane < (type.keep_right ? std::min(1, lanes) : lanes); ++lane) {
@@ -32,12 +37,14 @@ std::optional<EntrySpot> find_entry(const LaneIndex& index, Direction dir, doubl
     double v = speed_mps;
     if (leader != nullptr) {
       const double gap = gap_between(*leader, progress_m, type.length_m);
-      if (gap < wanted_gap_m(type, v, leader->speed_mps)) v = std::min(v, leader->speed_mps);
-      if (gap < wanted_gap_m(type, v, leader->speed_mps)) continue;
+      if (policy == EntryPolicy::kMatchLeader && gap < wanted_gap_m(driver, v, leader->speed_mps)) {
+        v = std::min(v, leader->speed_mps);
+      }
+      if (gap < wanted_gap_m(driver, v, leader->speed_mps)) continue;
     }
     if (follower != nullptr) {
       const Occupant self{kNoVehicle, progress_m, v, 0.0, type.length_m};
-      if (gap_between(self, follower->progress_m, follower->length_m) < wanted_gap_m(type, follower->speed_mps, v)) {
+      if (gap_between(self, follower->progress_m, follower->length_m) < wanted_gap_m(driver, follower->speed_mps, v)) {
         continue;
       }
     }

@@ -91,7 +91,7 @@ void RoadSim::enter(Direction dir) {
   while (!src.queue.empty()) {
     const SpeedDraw d = src.queue.front();
     const VehicleTypeConfig& type = scenario_.vehicle_types[d.type_index];
-    const auto spot = find_entry(index_, dir, progress, d.speed_mps, type);
+    const auto spot = find_entry(index_, dir, progress, d.speed_mps, type, mean_idm(type));
     if (!spot) return;  // the entrance is full: wait
     const VehicleId id = next_id_++;
     const std::uint64_t driver_seed = Random::derived(seed_, kDriverStreamLabel ^ id).next_u64();

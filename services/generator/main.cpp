@@ -14,6 +14,13 @@ int run(const dds::ServiceContext& ctx) {
   dds::RegionPublisher publisher(shell.node, ctx.id, road);
   // Observing the demand's stream takes a second or two: done before reporting ready.
   generator::GeneratorCore core(sc, Random::derived(ctx.seed, static_cast<std::uint64_t>(Role::kGenerator)).next_u64());
+  for (Direction d : {Direction::kForward, Direction::kBackward}) {
+    const ObservedStream& st = core.stream(d);
+    if (st.empty()) continue;
+    spdlog::info("stream {}: {:.0f} veh/h, density {:.2f} veh/km, space-mean speed {:.1f} km/h, {} platoons observed",
+                 d == Direction::kForward ? "forward" : "backward", st.flow_veh_per_s() * 3600.0,
+                 st.density_per_m() * 1000.0, st.mean_speed_mps() * 3.6, st.platoons().size());
+  }
   if (!shell.discover(ctx)) return 1;
 
   dds::run_step_loop(
@@ -31,7 +38,8 @@ int run(const dds::ServiceContext& ctx) {
       "({} members did not enter, {} platoons dropped, {} still queued)",
       c.filled + c.placed, c.filled, c.fills, c.fill_skipped, c.placed, c.arrivals, c.not_entered, c.dropped,
       core.queued());
-  spdlog::info("front zone: {} vehicles joined it, {} left it far ahead", c.ahead, c.left_ahead);
+  spdlog::info("front zone: {} vehicles joined it, {} left it far ahead, {} made way for a slow platoon", c.ahead,
+               c.left_ahead, c.made_way);
   spdlog::info("platoons arrived / their vehicles / vehicles placed: from behind {}/{}/{}, from ahead {}/{}/{}, "
                "oncoming {}/{}/{}",
                c.arrivals_at[0], c.members_at[0], c.placed_at[0], c.arrivals_at[1], c.members_at[1], c.placed_at[1],

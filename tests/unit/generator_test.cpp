@@ -73,8 +73,15 @@ TEST(Generator, TheObservedStreamIsSlowerThanItsDriversWishAndCarriesTheDemand) 
   EXPECT_GT(trucks_behind, 0.0);  // platoons exist
 }
 
+// Without regulation (nothing else moves here, so the window would look empty to it).
+ScenarioConfig unregulated() {
+  ScenarioConfig sc = freeway_scenario();
+  sc.demand_regulation_gain = 0.0;
+  return sc;
+}
+
 TEST(Generator, ArrivalsMatchTheMovingObserverRates) {
-  const ScenarioConfig sc = freeway_scenario();
+  const ScenarioConfig sc = unregulated();
   GeneratorCore g(sc, 11);
   const double u = 29.0;
   const int steps = 36000;  // an hour
@@ -110,7 +117,7 @@ TEST(Generator, ArrivalsMatchTheMovingObserverRates) {
 }
 
 TEST(Generator, AStandingEgoGetsTheWholeFlowFromBehind) {
-  const ScenarioConfig sc = freeway_scenario();
+  const ScenarioConfig sc = unregulated();
   GeneratorCore g(sc, 5);
   const int steps = 18000;
   for (int k = 0; k < steps; ++k) {
@@ -124,6 +131,48 @@ TEST(Generator, AStandingEgoGetsTheWholeFlowFromBehind) {
   // vehicles come in platoons of about two: a count of platoons is Poisson, of vehicles twice as wide
   EXPECT_NEAR(static_cast<double>(c.placed_at[0]), expected, 6.0 * std::sqrt(expected)) << c.placed_at[0];
   EXPECT_EQ(c.arrivals_at[1], 0U);
+}
+
+// Regulation: arrivals scaled by 1 + gain (expected - present) / expected, within [0, 1 + gain].
+// The oncoming entrance (the busiest) is counted over ten minutes with the window held empty, at
+// the stream's density and at twice that.
+std::uint64_t oncoming_arrivals(double gain, double density_factor) {
+  ScenarioConfig sc = freeway_scenario();
+  sc.demand_regulation_gain = gain;
+  GeneratorCore g(sc, 21);
+  const double u = 29.0;
+  const WindowBounds w0 = WindowBounds::around(0.0, sc.window);
+  const double length = w0.front_edge_m - w0.rear_edge_m;
+  const auto n = static_cast<std::size_t>(std::lround(density_factor * g.stream(Direction::kBackward).density_per_m() * length));
+  double s = 5000.0;
+  for (int k = 0; k < 6000; ++k) {
+    StepInput in;
+    in.step = static_cast<Step>(k);
+    in.ego = ego_at(in.step, s, u);
+    const WindowBounds w = WindowBounds::around(s, sc.window);
+    for (std::size_t i = 0; i < n; ++i) {  // a standing world of oncoming vehicles spread over the window
+      ObservedVehicle o;
+      o.id = 1000000 + static_cast<VehicleId>(i);
+      o.direction = Direction::kBackward;
+      o.s_m = w.rear_edge_m + (static_cast<double>(i) + 0.5) * length / static_cast<double>(n);
+      o.speed_mps = 0.0;
+      o.length_m = 0.1;
+      in.world_prev.push_back(o);
+    }
+    g.step(in);
+    s += u * sc.step_s;
+  }
+  return g.counters().arrivals_at[2];
+}
+
+TEST(Generator, RegulationPullsTheWindowTowardsTheStreamsDensity) {
+  const double plain = static_cast<double>(oncoming_arrivals(0.0, 1.0));
+  EXPECT_NEAR(static_cast<double>(oncoming_arrivals(4.0, 1.0)), plain, 5.0 * std::sqrt(plain));
+  // held empty, only the births of the last steps count as present: close to the full boost of 5
+  const double boosted = static_cast<double>(oncoming_arrivals(4.0, 0.0));
+  EXPECT_GT(boosted, 3.0 * plain);
+  EXPECT_LT(boosted, 5.0 * plain + 5.0 * std::sqrt(5.0 * plain));
+  EXPECT_EQ(oncoming_arrivals(4.0, 2.0), 0U);
 }
 
 TEST(Generator, AJumpOfTheEgoRefillsTheWindow) {

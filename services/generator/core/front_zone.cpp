@@ -51,4 +51,10 @@ std::vector<Vehicle> FrontZone::beyond(double limit_m) {
   return out;
 }
 
+std::vector<Vehicle> FrontZone::remove(VehicleId id) {
+  auto out = fleet_.extract_if([&](const Vehicle& v) { return v.id == id; });
+  stream_speed_mps_.erase(id);
+  return out;
+}
+
 }  // namespace entourage::generator

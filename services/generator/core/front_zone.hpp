@@ -31,6 +31,8 @@ class FrontZone {
   // Removes and returns the vehicles further ahead than `limit_m` (the ego slowed down: they will
   // not be reached).
   std::vector<Vehicle> beyond(double limit_m);
+  // Removes and returns the vehicle `id` (if the zone has it).
+  std::vector<Vehicle> remove(VehicleId id);
 
   const Fleet& vehicles() const { return fleet_; }
   bool owns(VehicleId id) const { return fleet_.owns(id); }

@@ -104,13 +104,13 @@ void GeneratorCore::index_world(const StepInput& in) {
 }
 
 bool GeneratorCore::fits(Direction dir, int lane, double p, const Vehicle& v) const {
-  const VehicleTypeConfig& type = scenario_.vehicle_types[v.type_index];
+  const IdmParams& driver = v.driver.car_following.idm;
   if (const Occupant* leader = index_.leader(dir, lane, p, kNoVehicle)) {
-    if (gap_between(*leader, p, v.length_m) < wanted_gap_m(type, v.speed_mps, leader->speed_mps)) return false;
+    if (gap_between(*leader, p, v.length_m) < wanted_gap_m(driver, v.speed_mps, leader->speed_mps)) return false;
   }
   if (const Occupant* follower = index_.follower(dir, lane, p, kNoVehicle)) {
     const Occupant self{kNoVehicle, p, v.speed_mps, 0.0, v.length_m};
-    if (gap_between(self, follower->progress_m, follower->length_m) < wanted_gap_m(type, follower->speed_mps, v.speed_mps)) {
+    if (gap_between(self, follower->progress_m, follower->length_m) < wanted_gap_m(driver, follower->speed_mps, v.speed_mps)) {
       return false;
     }
   }
@@ -188,12 +188,27 @@ double GeneratorCore::rate(const EdgeStream& s, double u) const {
   return s.edge == Edge::kRear ? stream.rate_rear_per_s(u) : stream.rate_front_per_s(u);
 }
 
+double GeneratorCore::regulation(Direction dir, const StepInput& in) const {
+  const double gain = scenario_.demand_regulation_gain;
+  if (gain <= 0.0) return 1.0;
+  const WindowBounds w = WindowBounds::around(in.ego.s_m, scenario_.window);
+  const double expected = stream(dir).density_per_m() * (w.front_edge_m - w.rear_edge_m);
+  if (!(expected > 0.0)) return 1.0;
+  const auto inside = [&](Direction d, double s_m) { return d == dir && s_m >= w.rear_edge_m && s_m <= w.front_edge_m; };
+  std::size_t present = 0;
+  for (const auto& o : in.world_prev) present += inside(o.direction, o.s_m) && !zone_.owns(o.id) ? 1 : 0;
+  for (const auto& h : recent_births_) present += inside(h.vehicle.direction, h.vehicle.s_m) ? 1 : 0;
+  return std::clamp(1.0 + gain * (expected - static_cast<double>(present)) / expected, 0.0, 1.0 + gain);
+}
+
 void GeneratorCore::arrive(const StepInput& in) {
   const double u = std::max(0.0, in.ego.speed_mps);
+  const double forward = regulation(Direction::kForward, in);
+  const double backward = regulation(Direction::kBackward, in);
   for (EdgeStream& s : edges_) {
     const ObservedStream& stream = this->stream(s.dir);
     if (stream.empty()) continue;
-    s.accumulated += rate(s, u) * scenario_.step_s;
+    s.accumulated += rate(s, u) * (s.dir == Direction::kForward ? forward : backward) * scenario_.step_s;
     while (s.accumulated >= s.next) {
       s.accumulated -= s.next;
       s.next = rng_.exponential(1.0);
@@ -224,7 +239,8 @@ bool GeneratorCore::place_one_by_one(EdgeStream& s, double u, const WindowBounds
       continue;
     }
     const auto room = find_entry(index_, s.dir, edge_p, model.speed_mps, scenario_.vehicle_types[model.type_index],
-                                 model.lane);
+                                 model.driver.car_following.idm, model.lane,
+                                 from_behind ? EntryPolicy::kMatchLeader : EntryPolicy::kOwnSpeed);
     // From behind, a vehicle held below the window's speed by the one ahead would not reach it yet.
     if (!room || (from_behind && room->speed_mps <= u)) return false;
     out.handoffs.push_back(birth(model, s.dir, room->lane, edge_p, room->speed_mps, w, step, HandoffReason::kBirth));
@@ -235,20 +251,69 @@ bool GeneratorCore::place_one_by_one(EdgeStream& s, double u, const WindowBounds
   return true;
 }
 
-bool GeneratorCore::place_whole(EdgeStream& s, const WindowBounds& w, Step, StepOutput&) {
-  // A slow platoon joins the far end of the front zone whole, its last vehicle front_zone_m beyond
-  // the edge, as soon as it fits there; it enters the window when the edge reaches it (hand_over).
-  const Platoon& platoon = s.queue.front().platoon;
-  const double leader_p = w.front_edge_m + config_.front_zone_m + platoon.members.back().offset_m;
-  const int lane = platoon.members.front().vehicle.lane;
-  for (const StreamVehicle& m : platoon.members) {
-    if (!fits(s.dir, lane, leader_p - m.offset_m, m.vehicle)) return false;
+bool GeneratorCore::platoon_fits(const Platoon& platoon, Direction dir, int lane, double leader_p,
+                                 std::vector<VehicleId>& in_the_way) const {
+  in_the_way.clear();
+  const StreamVehicle& tail = platoon.members.back();
+  const StreamVehicle& head = platoon.members.front();
+  const double tail_p = leader_p - tail.offset_m;
+  // Whatever follows it (the window's vehicles near the edge) and whatever leads it must have room.
+  if (!fits(dir, lane, tail_p, tail.vehicle) || !fits(dir, lane, leader_p, head.vehicle)) {
+    // fits() may have failed on a zone vehicle inside the platoon's span: judged below.
+    const Occupant* behind = index_.follower(dir, lane, tail_p, kNoVehicle);
+    const Occupant* ahead = index_.leader(dir, lane, leader_p, kNoVehicle);
+    const bool behind_ok = behind == nullptr || zone_.owns(behind->id) ||
+                           gap_between(Occupant{kNoVehicle, tail_p, tail.vehicle.speed_mps, 0.0, tail.vehicle.length_m},
+                                       behind->progress_m, behind->length_m) >=
+                               wanted_gap_m(tail.vehicle.driver.car_following.idm, behind->speed_mps, tail.vehicle.speed_mps);
+    const bool ahead_ok = ahead == nullptr || gap_between(*ahead, leader_p, head.vehicle.length_m) >=
+                                                  wanted_gap_m(head.vehicle.driver.car_following.idm,
+                                                               head.vehicle.speed_mps, ahead->speed_mps);
+    if (!behind_ok || !ahead_ok) return false;
   }
-  for (const StreamVehicle& m : platoon.members) {
-    zone_.add(make(m.vehicle, s.dir, lane, leader_p - m.offset_m, m.vehicle.speed_mps));
-    ++counters_.ahead;
+  // Zone vehicles within its span: faster ones are taken to have passed it (they leave, far ahead
+  // of the driver); a slower one (not yet reached by the edge) makes the lane unusable.
+  const double from = tail_p - tail.vehicle.length_m - config_.front_entry_margin_m;
+  const double to = leader_p + head.vehicle.length_m + config_.front_entry_margin_m;
+  for (const Occupant& o : index_.lane(dir, lane)) {
+    if (o.progress_m < from || o.progress_m > to) continue;
+    if (!zone_.owns(o.id) || o.speed_mps <= platoon.speed_mps) return false;
+    in_the_way.push_back(o.id);
   }
   return true;
+}
+
+bool GeneratorCore::place_from_ahead(EdgeStream& s, const WindowBounds& w) {
+  // A slow platoon lies ahead of the window; the edge reaches its last vehicle first. It joins the
+  // front zone whole, its last vehicle just beyond the edge, in its own lane or another one (only
+  // the right lane if a member keeps right); its vehicles enter the window as the edge reaches
+  // them (hand_over).
+  const Platoon& platoon = s.queue.front().platoon;
+  const double leader_p = w.front_edge_m + config_.front_entry_margin_m + platoon.members.back().offset_m;
+  const int own = platoon.members.front().vehicle.lane;
+  bool keep_right = false;
+  for (const StreamVehicle& m : platoon.members) keep_right |= scenario_.vehicle_types[m.vehicle.type_index].keep_right;
+  const int lanes = keep_right ? 1 : scenario_.road.lanes(s.dir);
+  std::vector<VehicleId> in_the_way;
+  for (int k = 0; k < lanes; ++k) {
+    const int lane = k == 0 ? std::min(own, lanes - 1) : (k <= own ? k - 1 : k);
+    if (!platoon_fits(platoon, s.dir, lane, leader_p, in_the_way)) continue;
+    for (VehicleId id : in_the_way) {
+      for (Vehicle& v : zone_.remove(id)) passed_.push_back(std::move(v));
+    }
+    for (const StreamVehicle& m : platoon.members) {
+      add_to_zone(make(m.vehicle, s.dir, lane, leader_p - m.offset_m, m.vehicle.speed_mps));
+    }
+    return true;
+  }
+  return false;
+}
+
+void GeneratorCore::add_to_zone(const Vehicle& v) {
+  zone_.add(v);
+  add_to_index(index_, v.direction, v.lane, v.lane, v.id, v.progress_m(), v.speed_mps, 0.0, v.length_m);
+  index_.sort();
+  ++counters_.ahead;
 }
 
 void GeneratorCore::hand_over(const StepInput& in, StepOutput& out) {
@@ -263,7 +328,11 @@ void GeneratorCore::hand_over(const StepInput& in, StepOutput& out) {
     ++counters_.placed;
     ++counters_.placed_at[static_cast<std::size_t>(Entrance::kFront)];
   }
-  for (const Vehicle& v : zone_.beyond(w.front_edge_m + config_.front_zone_limit_m)) {
+  std::vector<Vehicle> leaving = zone_.beyond(w.front_edge_m + config_.front_zone_limit_m);
+  counters_.made_way += passed_.size();
+  for (Vehicle& v : passed_) leaving.push_back(std::move(v));
+  passed_.clear();
+  for (const Vehicle& v : leaving) {
     Handoff h = make_handoff(v, in.step, kSelf, Role::kNone, Region::kOutside, HandoffReason::kLeftWindow);
     inbox_.note_sent(h);
     out.handoffs.push_back(std::move(h));
@@ -277,9 +346,9 @@ void GeneratorCore::place(const StepInput& in, StepOutput& out) {
   const WindowBounds w = WindowBounds::around(in.ego.s_m, scenario_.window);
   const double u = std::max(0.0, in.ego.speed_mps);
   for (EdgeStream& s : edges_) {
-    const bool whole = s.dir == Direction::kForward && s.edge == Edge::kFront;
+    const bool ahead = s.dir == Direction::kForward && s.edge == Edge::kFront;
     while (!s.queue.empty()) {
-      const bool done = whole ? place_whole(s, w, in.step, out) : place_one_by_one(s, u, w, in.step, out);
+      const bool done = ahead ? place_from_ahead(s, w) : place_one_by_one(s, u, w, in.step, out);
       if (!done) break;
       s.queue.pop_front();
     }

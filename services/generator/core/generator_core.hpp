@@ -15,10 +15,11 @@
 //   ahead     the front zone's vehicles move (front_zone.hpp: the traffic just beyond the front edge)
 //   fill      at the first step or after a jump: a stretch of the observed stream fills the window
 //             and the front zone
-//   arrive    platoon arrivals at each edge join that edge's queue
+//   arrive    platoon arrivals at each edge join that edge's queue; the rates follow the ego's speed
+//             and are scaled towards the stream's density in the window (regulation)
 //   place     from behind and oncoming, a platoon's vehicles enter one by one at the edge, each
-//             when its lane has room there; from ahead, a slow platoon joins the far end of the
-//             front zone whole, and enters the window when the front edge reaches it
+//             when its lane has room there; from ahead, a slow platoon joins the front zone whole,
+//             its last vehicle just beyond the edge, and enters the window as the edge reaches it
 //   hand over front-zone vehicles the edge has reached go to meso; those far ahead retire
 // New vehicles are handed at once to micro (inner region) or meso (outer regions).
 
@@ -60,12 +61,14 @@ struct Counters {
   std::uint64_t not_entered = 0;    // platoon members that could not enter (too slow, or no room)
   std::uint64_t ahead = 0;          // vehicles that joined the front zone
   std::uint64_t left_ahead = 0;     // front-zone vehicles that left far ahead without entering
+  std::uint64_t made_way = 0;       // faster front-zone vehicles taken to have passed a slow platoon
   std::uint64_t fills = 0;          // number of initial fills (1 + jumps)
 };
 
 struct GeneratorConfig {
   double jump_threshold_m = 100.0;  // an ego moving further than this in a step has jumped
-  double front_zone_m = 300.0;      // the front zone's reach beyond the front edge
+  double front_zone_m = 300.0;      // the front zone's reach beyond the front edge at a fill
+  double front_entry_margin_m = 2.0;  // a slow platoon's last vehicle joins the zone this far ahead of the edge
   int fill_candidates = 8;          // stretches drawn for a fill; the closest to the mean density wins
   double front_zone_limit_m = 1500.0;  // vehicles further ahead than this leave the front zone
   std::size_t max_queue = 100;      // platoons waiting at one edge before the oldest is dropped
@@ -86,7 +89,7 @@ class GeneratorCore {
  private:
   struct Pending {
     Platoon platoon;
-    std::size_t next_member = 0;
+    std::size_t next_member = 0;  // from behind and oncoming: members placed, leader first
   };
   struct EdgeStream {
     Direction dir;
@@ -106,11 +109,17 @@ class GeneratorCore {
   void arrive(const StepInput& in);
   void place(const StepInput& in, StepOutput& out);
   bool place_one_by_one(EdgeStream& s, double u, const WindowBounds& w, Step step, StepOutput& out);
-  bool place_whole(EdgeStream& s, const WindowBounds& w, Step step, StepOutput& out);
+  bool place_from_ahead(EdgeStream& s, const WindowBounds& w);
+  bool platoon_fits(const Platoon& platoon, Direction dir, int lane, double leader_p,
+                    std::vector<VehicleId>& in_the_way) const;
+  void add_to_zone(const Vehicle& v);
   bool fits(Direction dir, int lane, double progress_m, const Vehicle& v) const;
   Handoff birth(const Vehicle& model, Direction dir, int lane, double progress_m, double speed_mps,
                 const WindowBounds& w, Step step, HandoffReason reason);
   double rate(const EdgeStream& s, double u) const;
+  // Arrivals of a direction scaled by how far its vehicles in the window are from the stream's
+  // density times the window's length (scenario demand.regulation_gain).
+  double regulation(Direction dir, const StepInput& in) const;
 
   ScenarioConfig scenario_;
   GeneratorConfig config_;
@@ -125,6 +134,7 @@ class GeneratorCore {
   LaneIndex index_;                     // world at step-1 moved on to this step, plus births
   std::vector<Handoff> recent_births_;  // not yet visible in the world state
   FrontZone zone_;
+  std::vector<Vehicle> passed_;  // zone vehicles that made way for a slow platoon: they leave
   HandoffInbox inbox_{Role::kGenerator, {Region::kOutside}};  // vehicles leaving the window ahead
   Counters counters_;
 };

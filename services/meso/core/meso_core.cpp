@@ -17,12 +17,21 @@ std::vector<Region> regions_of_instance(std::uint8_t instance) {
   }
 }
 
+MesoModelParams model_params_for(const ScenarioConfig& scenario) {
+  MesoModelParams m;
+  for (const VehicleTypeConfig& t : scenario.vehicle_types) {
+    m.leader_brake_limit_mps2 = std::max(m.leader_brake_limit_mps2, t.max_decel_mps2);
+  }
+  return m;
+}
+
 MesoCore::MesoCore(const ScenarioConfig& scenario, ServiceId self)
     : scenario_(scenario),
       self_(self),
       regions_(regions_of_instance(self.instance)),
       inbox_(Role::kMeso, regions_),
       index_(scenario.road.lanes_forward, scenario.road.lanes_backward),
+      model_(model_params_for(scenario)),
       env_(scenario) {}
 
 bool MesoCore::serves(Region r) const { return std::find(regions_.begin(), regions_.end(), r) != regions_.end(); }
@@ -59,6 +68,13 @@ Ahead MesoCore::ahead_of(const Vehicle& v) const {
   if (const Occupant* leader = nearest_leader(v, index_)) {
     out = {std::max(0.0, gap_between(*leader, v.progress_m(), v.length_m)), leader->speed_mps};
   }
+  // A vehicle of the other direction in its lane (an overtaker that has not returned yet) is taken
+  // as a standing obstacle: it brakes when it could no longer stop comfortably short of it, as a
+  // driver who expects the overtaker to pull back in (micro's overtakers plan on that).
+  if (const Occupant* o = index_.oncoming(v.direction, v.lane, v.progress_m())) {
+    const double gap = std::max(0.0, oncoming_gap(*o, v.progress_m(), v.length_m));
+    if (out.gap_m < 0.0 || gap < out.gap_m) out = {gap, 0.0};
+  }
   const double to_closure = env_.ahead().distance_to_closure_m(v.direction, v.lane, v.s_m) - 0.5 * v.length_m;
   if (to_closure < env_.rules().mandatory_lookahead_m && (out.gap_m < 0.0 || to_closure < out.gap_m)) {
     out = {std::max(0.0, to_closure), 0.0};  // the closed lane ends there: a standing obstacle
@@ -85,7 +101,7 @@ void MesoCore::move() {
     const Ahead ahead = ahead_of(v);
     const double desired = env_.speeds().desired_speed_mps(v.direction, v.s_m, v.driver.desired_speed_mps(),
                                                            v.driver.basic_median_mps());
-    const MesoSpeed ms = next_speed(v, equilibrium_of(v), ahead, desired, dt);
+    const MesoSpeed ms = next_speed(v, equilibrium_of(v), ahead, desired, dt, model_);
     if (ms.emergency) ++counters_.emergency_stops;
     const int must = mandatory_target_lane(v, env_);
     const std::optional<int> lane = choose_lane(v, index_, ahead.gap_m, lane_rules_, must);

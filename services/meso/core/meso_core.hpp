@@ -41,6 +41,10 @@ struct Counters {
 // The outer regions served by a meso instance (kMesoBoth, kMesoFront or kMesoRear).
 std::vector<Region> regions_of_instance(std::uint8_t instance);
 
+// The meso model's parameters for a scenario: leaders brake at most as hard as the hardest-braking
+// vehicle type, and never harder than the friction limit's default.
+MesoModelParams model_params_for(const ScenarioConfig& scenario);
+
 class MesoCore {
  public:
   MesoCore(const ScenarioConfig& scenario, ServiceId self);
@@ -67,6 +71,7 @@ class MesoCore {
   Fleet fleet_;
   LaneIndex index_;
   LaneRules lane_rules_;
+  MesoModelParams model_;
   DrivingEnvironment env_;
   std::unordered_map<VehicleId, EquilibriumSpeed> equilibrium_;  // per owned vehicle's driver
   Counters counters_;

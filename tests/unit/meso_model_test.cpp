@@ -1,0 +1,101 @@
+// The meso speed update (services/meso/core/meso_model.hpp): it keeps an equilibrium, returns to
+// it at comfortable rates, brakes harder only for a leader too close, never beyond the vehicle's
+// limit except to stay out of a leader, and never drives into a leader.
+#include <gtest/gtest.h>
+
+#include "core/random.hpp"
+#include "core_test_util.hpp"
+#include "meso/core/meso_model.hpp"
+#include "traffic/driver_draw.hpp"
+
+namespace entourage::meso {
+namespace {
+
+constexpr double kDt = 0.1;
+
+struct Case {
+  ScenarioConfig sc = entourage::testing::minimal_scenario();
+  Vehicle v;
+  EquilibriumSpeed eq;
+  Case(double speed_mps, double v0_mps) {
+    Random rng(7);
+    const DriverParams d = draw_driver(sc.vehicle_types[0], v0_mps, 7, rng);
+    v = make_vehicle(1, 0, sc.vehicle_types[0], Direction::kForward, 0, 1000.0, speed_mps, d);
+    eq = EquilibriumSpeed(v.driver.car_following);
+  }
+  const IdmParams& p() const { return v.driver.car_following.idm; }
+  MesoSpeed next(const Ahead& a) const { return next_speed(v, eq, a, p().desired_speed_mps, kDt); }
+  // The gap at which this driver's equilibrium speed is `speed_mps` (bisection on the table).
+  double equilibrium_gap(double speed_mps) const {
+    double lo = 0.0;
+    double hi = eq.max_gap_m();
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (eq.at(mid) < speed_mps ? lo : hi) = mid;
+    }
+    return hi;
+  }
+};
+
+TEST(MesoModel, KeepsAnEquilibrium) {
+  Case c(25.0, 33.0);
+  const double gap = c.equilibrium_gap(25.0);
+  const MesoSpeed s = c.next({gap, 25.0});
+  EXPECT_NEAR(s.speed_mps, 25.0, 0.05);
+  EXPECT_FALSE(s.emergency);
+}
+
+TEST(MesoModel, FreeRoadAcceleratesAtMostAtTheDriversRate) {
+  Case c(20.0, 33.0);
+  const MesoSpeed s = c.next({});
+  EXPECT_GT(s.speed_mps, 20.0);
+  EXPECT_LE(s.speed_mps - 20.0, c.p().max_accel_mps2 * kDt + 1e-9);
+}
+
+TEST(MesoModel, ACloseButSafeLeaderIsApproachedAtComfortableDeceleration) {
+  // Half the equilibrium gap behind a leader at the same speed: too close for equilibrium but far
+  // enough to brake comfortably, so no harder than b (the old update braked at b_max at once).
+  Case c(28.0, 33.0);
+  const double gap = 0.5 * c.equilibrium_gap(28.0);
+  const MesoSpeed s = c.next({gap, 28.0});
+  EXPECT_LT(s.speed_mps, 28.0);
+  EXPECT_GE(s.speed_mps, 28.0 - c.p().comfort_decel_mps2 * kDt - 1e-9);
+  EXPECT_FALSE(s.emergency);
+}
+
+TEST(MesoModel, AVehicleThatJustEnteredCloseBehindDoesNotStopDead) {
+  // 2.5 m behind a leader at the same speed (a vehicle that changed lanes in front of a newborn):
+  // it brakes hard, but the leader keeps moving, so it need not stop within a step.
+  Case c(23.7, 33.0);
+  const MesoSpeed s = c.next({2.5, 23.4});
+  EXPECT_GE(s.speed_mps, 23.7 - c.v.driver.max_decel_mps2 * kDt - 1e-9);
+  EXPECT_FALSE(s.emergency);
+}
+
+TEST(MesoModel, ALeaderTooCloseToBrakeForComfortablyMeansBrakingUpToTheLimit) {
+  Case c(30.0, 33.0);
+  const MesoSpeed s = c.next({20.0, 10.0});
+  EXPECT_NEAR(s.speed_mps, 30.0 - c.v.driver.max_decel_mps2 * kDt, 1e-9);
+}
+
+TEST(MesoModel, NeverIntoTheLeaderEvenIfItBrakesAtTheFrictionLimit) {
+  Case c(30.0, 33.0);
+  for (double gap : {0.6, 1.0, 2.0, 3.0}) {
+    const double leader = 5.0;
+    const MesoSpeed s = c.next({gap, leader});
+    const double leader_low = std::max(0.0, leader - MesoModelParams{}.leader_brake_limit_mps2 * kDt);
+    EXPECT_LE(s.speed_mps * kDt, gap - MesoModelParams{}.floor_gap_m + leader_low * kDt + 1e-9) << gap;
+    EXPECT_TRUE(s.emergency) << gap;
+  }
+  EXPECT_EQ(c.next({0.2, 0.0}).speed_mps, 0.0);
+}
+
+TEST(MesoModel, AStandingObstacleIsBrakedForOnlyWhenComfortableBrakingNoLongerSuffices) {
+  Case c(25.0, 33.0);
+  const double stopping_m = 25.0 * 25.0 / (2.0 * c.p().comfort_decel_mps2) + c.p().min_gap_m;
+  EXPECT_LT(c.next({stopping_m - 10.0, 0.0}).speed_mps, 25.0);
+  EXPECT_NEAR(c.next({30.0, 0.0}).speed_mps, 25.0 - c.v.driver.max_decel_mps2 * kDt, 1e-9);
+}
+
+}  // namespace
+}  // namespace entourage::meso
