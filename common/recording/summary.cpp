@@ -8,6 +8,7 @@
 #include "core/units.hpp"
 #include "road/window.hpp"
 #include "traffic/handoff.hpp"
+#include "traffic/observed_stream.hpp"
 
 namespace entourage::recording {
 
@@ -103,6 +104,20 @@ PastTheEgo measure_past_ego(const Tables& t, const ScenarioConfig& sc) {
   return p;
 }
 
+PastTheEgoPrediction predict_past_ego(const Tables& t, const ScenarioConfig& sc) {
+  PastTheEgoPrediction p;
+  if (t.ego.size() < 2) return p;
+  const ObservedStream forward(sc, Direction::kForward, StreamObservation{}, sc.seed);
+  const ObservedStream backward(sc, Direction::kBackward, StreamObservation{}, sc.seed);
+  for (const auto& e : t.ego) {
+    const double u = std::max(0.0, e.speed_mps);
+    p.overtaking += forward.vehicles_rear_per_s(u) * sc.step_s;
+    p.overtaken += forward.vehicles_front_per_s(u) * sc.step_s;
+    p.met += backward.vehicles_oncoming_per_s(u) * sc.step_s;
+  }
+  return p;
+}
+
 Manoeuvres count_manoeuvres(const Tables& t, const ScenarioConfig& sc) {
   Manoeuvres m;
   std::unordered_map<std::uint32_t, std::pair<std::uint64_t, int>> last;  // id -> (step, target lane)
@@ -150,6 +165,7 @@ RunSummary summarize(const Recording& r, const Tables& t, const ScenarioConfig& 
   s.forward = measure_flow(t, sc, 1, spacing);
   s.backward = measure_flow(t, sc, -1, spacing);
   s.past_ego = measure_past_ego(t, sc);
+  s.past_ego_predicted = predict_past_ego(t, sc);
   s.manoeuvres = count_manoeuvres(t, sc);
   if (!t.ego.empty()) {
     double total = 0.0;

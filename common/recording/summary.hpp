@@ -43,6 +43,17 @@ struct PastTheEgo {
   double backward_veh_per_h = 0.0;
 };
 
+// What the moving-observer relations predict for the same drive: the catch-up rates of the
+// demand's stream (as the generator observes it, traffic/observed_stream.hpp) at the ego's speed,
+// integrated over the ego's speed history: passive k E[(v - u)+], active k E[(u - v)+], oncoming
+// met k_o E[v + u], each in vehicles per second.
+struct PastTheEgoPrediction {
+  double overtaking = 0.0;
+  double overtaken = 0.0;
+  double met = 0.0;
+};
+PastTheEgoPrediction predict_past_ego(const Tables& t, const ScenarioConfig& sc);
+
 // Lateral manoeuvres seen in the recording: a lane change starts when a vehicle's target lane
 // leaves its lane; one into the oncoming carriageway starts an overtaking.
 struct Manoeuvres {
@@ -66,6 +77,7 @@ struct RunSummary {
   FlowMeasurement forward;
   FlowMeasurement backward;
   PastTheEgo past_ego;
+  PastTheEgoPrediction past_ego_predicted;
   Manoeuvres manoeuvres;
   double ego_mean_speed_mps = 0.0;
   double ego_distance_m = 0.0;

@@ -107,6 +107,26 @@ const Platoon& ObservedStream::draw(Random& rng, Weight w) const {
   return platoons_.back();
 }
 
+template <typename Weight>
+double ObservedStream::vehicle_mean(Weight w) const {
+  if (platoons_.empty()) return 0.0;
+  double sum = 0.0;
+  for (const auto& p : platoons_) sum += static_cast<double>(p.members.size()) * w(p.speed_mps);
+  return sum / static_cast<double>(platoons_.size());
+}
+
+double ObservedStream::vehicles_rear_per_s(double u) const {
+  return platoon_density_ * vehicle_mean([u](double v) { return std::max(0.0, v - u); });
+}
+
+double ObservedStream::vehicles_front_per_s(double u) const {
+  return platoon_density_ * vehicle_mean([u](double v) { return std::max(0.0, u - v); });
+}
+
+double ObservedStream::vehicles_oncoming_per_s(double u) const {
+  return platoon_density_ * vehicle_mean([u](double v) { return v + u; });
+}
+
 double ObservedStream::rate_rear_per_s(double u) const {
   return platoon_density_ * platoon_mean([u](double v) { return std::max(0.0, v - u); });
 }

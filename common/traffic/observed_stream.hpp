@@ -63,6 +63,12 @@ class ObservedStream {
   double rate_rear_per_s(double window_speed_mps) const;  // platoons per second
   double rate_front_per_s(double window_speed_mps) const;
   double rate_oncoming_per_s(double window_speed_mps) const;
+  // The same in vehicles per second (each platoon counted with its size): the catch-ups of a
+  // driver at a steady speed u, passive (overtaken by the stream) and active (overtaking it), and
+  // the oncoming vehicles met.
+  double vehicles_rear_per_s(double window_speed_mps) const;
+  double vehicles_front_per_s(double window_speed_mps) const;
+  double vehicles_oncoming_per_s(double window_speed_mps) const;
   const Platoon& draw_rear(Random& rng, double window_speed_mps) const;
   const Platoon& draw_front(Random& rng, double window_speed_mps) const;
   const Platoon& draw_oncoming(Random& rng, double window_speed_mps) const;
@@ -77,6 +83,8 @@ class ObservedStream {
   std::vector<StreamVehicle> one_stretch(Random& rng, double length_m) const;
   template <typename Weight>
   double platoon_mean(Weight w) const;
+  template <typename Weight>
+  double vehicle_mean(Weight w) const;  // over platoons, of size x w(platoon speed)
   template <typename Weight>
   const Platoon& draw(Random& rng, Weight w) const;
 

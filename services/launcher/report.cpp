@@ -20,6 +20,12 @@ std::string f1(double v) {
   return b;
 }
 
+std::string f2(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2f", v);
+  return b;
+}
+
 double percentile(std::vector<double> v, double p) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
@@ -76,6 +82,14 @@ bool print_report(const ReportInput& in, const recording::Recording& rec, std::o
   out << "  past the ego: " << pe.overtaking << " vehicles overtook it, it overtook " << pe.overtaken << ", it met "
       << pe.met << " oncoming; moving-observer flow " << f1(pe.forward_veh_per_h) << " veh/h forward, "
       << f1(pe.backward_veh_per_h) << " veh/h backward\n";
+  const auto& pp = s.past_ego_predicted;
+  const auto ratio = [](std::uint64_t n, double expected) {
+    return expected > 0.0 ? f2(static_cast<double>(n) / expected) : std::string("-");
+  };
+  out << "  catch-ups against the moving-observer prediction: passive " << pe.overtaking << " / " << f1(pp.overtaking)
+      << " (" << ratio(pe.overtaking, pp.overtaking) << "), active " << pe.overtaken << " / " << f1(pp.overtaken)
+      << " (" << ratio(pe.overtaken, pp.overtaken) << "), oncoming met " << pe.met << " / " << f1(pp.met) << " ("
+      << ratio(pe.met, pp.met) << ")\n";
   out << "  lane changes: " << s.manoeuvres.lane_changes;
   if (in.scenario.road.kind == RoadKind::kRural) {
     out << "; overtakings in the oncoming lane: " << s.manoeuvres.overtakings << " (by " << s.manoeuvres.overtakers

@@ -7,7 +7,9 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "core_test_util.hpp"
 #include "recording/checks.hpp"
+#include "recording/summary.hpp"
 #include "recording/recording.hpp"
 #include "recording/tables.hpp"
 
@@ -208,6 +210,44 @@ TEST(Checks, TheEgoMustLeadAndFollowMicroVehicles) {
   Tables t = clean_tables();
   for (auto& v : t.vehicles) v.owner = "meso";
   EXPECT_FALSE(find(check_invariants(t, 4.6, 1.8), "ego_interacts").passed);
+}
+
+}  // namespace
+}  // namespace entourage::recording
+
+// The catch-up prediction for a recording: a standing ego is passed by the whole flow and passes
+// nobody; oncoming, it meets the whole oncoming flow. At the stream's mean speed it overtakes and is
+// overtaken alike within the spread of speeds.
+namespace entourage::recording {
+namespace {
+
+Tables ego_driving(double speed_mps, int steps) {
+  Tables t;
+  for (int k = 0; k < steps; ++k) {
+    EgoRow e;
+    e.step = static_cast<std::uint64_t>(k);
+    e.speed_mps = speed_mps;
+    t.ego.push_back(e);
+  }
+  return t;
+}
+
+TEST(PastTheEgoPrediction, AStandingEgoIsPassedByTheWholeFlow) {
+  const ScenarioConfig sc = entourage::testing::freeway_scenario();
+  const double seconds = 600.0;
+  const auto p = predict_past_ego(ego_driving(0.0, static_cast<int>(seconds / sc.step_s)), sc);
+  EXPECT_NEAR(p.overtaking, sc.forward.flow_veh_per_s * seconds, 1e-6 * sc.forward.flow_veh_per_s * seconds + 1.0);
+  EXPECT_EQ(p.overtaken, 0.0);
+  EXPECT_NEAR(p.met, sc.backward.flow_veh_per_s * seconds, 0.01 * sc.backward.flow_veh_per_s * seconds);
+}
+
+TEST(PastTheEgoPrediction, FasterEgosOvertakeMoreAndAreOvertakenLess) {
+  const ScenarioConfig sc = entourage::testing::freeway_scenario();
+  const auto slow = predict_past_ego(ego_driving(25.0, 6000), sc);
+  const auto fast = predict_past_ego(ego_driving(35.0, 6000), sc);
+  EXPECT_GT(slow.overtaking, fast.overtaking);
+  EXPECT_LT(slow.overtaken, fast.overtaken);
+  EXPECT_LT(slow.met, fast.met);
 }
 
 }  // namespace
