@@ -1,6 +1,7 @@
 #pragma once
 // Identities shared by every service: vehicles, directions, regions and services.
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -22,6 +23,8 @@ inline constexpr VehicleId kDirectorFirstVehicleId = 0x80000000u;
 enum class Direction : std::int8_t { kForward = 1, kBackward = -1 };
 
 inline int sign(Direction d) { return static_cast<int>(d); }
+// 0 for the ego's direction, 1 for the oncoming one: an index into per-direction arrays.
+inline std::size_t dir_index(Direction d) { return d == Direction::kForward ? 0 : 1; }
 inline const char* to_string(Direction d) { return d == Direction::kForward ? "forward" : "backward"; }
 
 // Where a road position lies in the window that moves with the ego (see road/window.hpp).

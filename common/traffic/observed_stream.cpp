@@ -88,10 +88,10 @@ double ObservedStream::mean_speed_mps() const {
 }
 
 template <typename Weight>
-double ObservedStream::platoon_mean(Weight w) const {
+double ObservedStream::platoon_mean(Weight w, bool per_vehicle) const {
   if (platoons_.empty()) return 0.0;
   double sum = 0.0;
-  for (const auto& p : platoons_) sum += w(p.speed_mps);
+  for (const auto& p : platoons_) sum += (per_vehicle ? static_cast<double>(p.members.size()) : 1.0) * w(p.speed_mps);
   return sum / static_cast<double>(platoons_.size());
 }
 
@@ -107,24 +107,16 @@ const Platoon& ObservedStream::draw(Random& rng, Weight w) const {
   return platoons_.back();
 }
 
-template <typename Weight>
-double ObservedStream::vehicle_mean(Weight w) const {
-  if (platoons_.empty()) return 0.0;
-  double sum = 0.0;
-  for (const auto& p : platoons_) sum += static_cast<double>(p.members.size()) * w(p.speed_mps);
-  return sum / static_cast<double>(platoons_.size());
-}
-
 double ObservedStream::vehicles_rear_per_s(double u) const {
-  return platoon_density_ * vehicle_mean([u](double v) { return std::max(0.0, v - u); });
+  return platoon_density_ * platoon_mean([u](double v) { return std::max(0.0, v - u); }, true);
 }
 
 double ObservedStream::vehicles_front_per_s(double u) const {
-  return platoon_density_ * vehicle_mean([u](double v) { return std::max(0.0, u - v); });
+  return platoon_density_ * platoon_mean([u](double v) { return std::max(0.0, u - v); }, true);
 }
 
 double ObservedStream::vehicles_oncoming_per_s(double u) const {
-  return platoon_density_ * vehicle_mean([u](double v) { return v + u; });
+  return platoon_density_ * platoon_mean([u](double v) { return v + u; }, true);
 }
 
 double ObservedStream::rate_rear_per_s(double u) const {

@@ -81,10 +81,9 @@ class ObservedStream {
 
  private:
   std::vector<StreamVehicle> one_stretch(Random& rng, double length_m) const;
+  // Mean over platoons of w(platoon speed), times the platoon's size if `per_vehicle`.
   template <typename Weight>
-  double platoon_mean(Weight w) const;
-  template <typename Weight>
-  double vehicle_mean(Weight w) const;  // over platoons, of size x w(platoon speed)
+  double platoon_mean(Weight w, bool per_vehicle = false) const;
   template <typename Weight>
   const Platoon& draw(Random& rng, Weight w) const;
 

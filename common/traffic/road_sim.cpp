@@ -11,8 +11,6 @@ namespace {
 constexpr std::uint64_t kDriverStreamLabel = 0x726f616473696d00ULL;
 constexpr std::size_t kDirections = 2;
 
-std::size_t dir_index(Direction d) { return d == Direction::kForward ? 0 : 1; }
-
 RoadSimConfig for_demand_of(const ScenarioConfig& scenario, Direction demand_of, RoadSimConfig config) {
   const bool two_way = scenario.road.kind == RoadKind::kRural && scenario.road.lanes_forward > 0 &&
                        scenario.road.lanes_backward > 0;

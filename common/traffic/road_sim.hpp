@@ -96,8 +96,8 @@ class RoadSim {
     double accumulated = 0.0;
     double next_arrival = 1.0;
   };
-  Source& source(Direction d) { return sources_[d == Direction::kForward ? 0 : 1]; }
-  const Source& source(Direction d) const { return sources_[d == Direction::kForward ? 0 : 1]; }
+  Source& source(Direction d) { return sources_[dir_index(d)]; }
+  const Source& source(Direction d) const { return sources_[dir_index(d)]; }
 
   void arrive();
   void enter(Direction d);

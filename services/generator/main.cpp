@@ -18,7 +18,7 @@ int run(const dds::ServiceContext& ctx) {
     const ObservedStream& st = core.stream(d);
     if (st.empty()) continue;
     spdlog::info("stream {}: {:.0f} veh/h, density {:.2f} veh/km, space-mean speed {:.1f} km/h, {} platoons observed",
-                 d == Direction::kForward ? "forward" : "backward", st.flow_veh_per_s() * 3600.0,
+                 to_string(d), st.flow_veh_per_s() * 3600.0,
                  st.density_per_m() * 1000.0, st.mean_speed_mps() * 3.6, st.platoons().size());
   }
   if (!shell.discover(ctx)) return 1;

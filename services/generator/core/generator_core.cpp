@@ -103,18 +103,22 @@ void GeneratorCore::index_world(const StepInput& in) {
   index_.sort();
 }
 
+bool GeneratorCore::room_ahead(Direction dir, int lane, double p, const Vehicle& v) const {
+  const Occupant* leader = index_.leader(dir, lane, p, kNoVehicle);
+  return leader == nullptr ||
+         gap_between(*leader, p, v.length_m) >= wanted_gap_m(v.driver.car_following.idm, v.speed_mps, leader->speed_mps);
+}
+
+const Occupant* GeneratorCore::crowding_follower(Direction dir, int lane, double p, const Vehicle& v) const {
+  const Occupant* follower = index_.follower(dir, lane, p, kNoVehicle);
+  if (follower == nullptr) return nullptr;
+  const Occupant self{kNoVehicle, p, v.speed_mps, 0.0, v.length_m};
+  const double wanted = wanted_gap_m(v.driver.car_following.idm, follower->speed_mps, v.speed_mps);
+  return gap_between(self, follower->progress_m, follower->length_m) < wanted ? follower : nullptr;
+}
+
 bool GeneratorCore::fits(Direction dir, int lane, double p, const Vehicle& v) const {
-  const IdmParams& driver = v.driver.car_following.idm;
-  if (const Occupant* leader = index_.leader(dir, lane, p, kNoVehicle)) {
-    if (gap_between(*leader, p, v.length_m) < wanted_gap_m(driver, v.speed_mps, leader->speed_mps)) return false;
-  }
-  if (const Occupant* follower = index_.follower(dir, lane, p, kNoVehicle)) {
-    const Occupant self{kNoVehicle, p, v.speed_mps, 0.0, v.length_m};
-    if (gap_between(self, follower->progress_m, follower->length_m) < wanted_gap_m(driver, follower->speed_mps, v.speed_mps)) {
-      return false;
-    }
-  }
-  return true;
+  return room_ahead(dir, lane, p, v) && crowding_follower(dir, lane, p, v) == nullptr;
 }
 
 Vehicle GeneratorCore::make(const Vehicle& model, Direction dir, int lane, double progress_m, double speed_mps) {
@@ -188,27 +192,35 @@ double GeneratorCore::rate(const EdgeStream& s, double u) const {
   return s.edge == Edge::kRear ? stream.rate_rear_per_s(u) : stream.rate_front_per_s(u);
 }
 
-double GeneratorCore::regulation(Direction dir, const StepInput& in) const {
+std::array<double, 2> GeneratorCore::regulation(const StepInput& in) const {
+  std::array<double, 2> factor{1.0, 1.0};  // by direction index
   const double gain = scenario_.demand_regulation_gain;
-  if (gain <= 0.0) return 1.0;
+  if (gain <= 0.0) return factor;
   const WindowBounds w = WindowBounds::around(in.ego.s_m, scenario_.window);
-  const double expected = stream(dir).density_per_m() * (w.front_edge_m - w.rear_edge_m);
-  if (!(expected > 0.0)) return 1.0;
-  const auto inside = [&](Direction d, double s_m) { return d == dir && s_m >= w.rear_edge_m && s_m <= w.front_edge_m; };
-  std::size_t present = 0;
-  for (const auto& o : in.world_prev) present += inside(o.direction, o.s_m) && !zone_.owns(o.id) ? 1 : 0;
-  for (const auto& h : recent_births_) present += inside(h.vehicle.direction, h.vehicle.s_m) ? 1 : 0;
-  return std::clamp(1.0 + gain * (expected - static_cast<double>(present)) / expected, 0.0, 1.0 + gain);
+  std::array<std::size_t, 2> present{0, 0};
+  const auto count = [&](Direction d, double s_m) {
+    if (s_m >= w.rear_edge_m && s_m <= w.front_edge_m) ++present[dir_index(d)];
+  };
+  for (const auto& o : in.world_prev) {
+    if (!zone_.owns(o.id)) count(o.direction, o.s_m);
+  }
+  for (const auto& h : recent_births_) count(h.vehicle.direction, h.vehicle.s_m);
+  for (Direction d : {Direction::kForward, Direction::kBackward}) {
+    const double expected = stream(d).density_per_m() * (w.front_edge_m - w.rear_edge_m);
+    if (!(expected > 0.0)) continue;
+    const double deficit = (expected - static_cast<double>(present[dir_index(d)])) / expected;
+    factor[dir_index(d)] = std::clamp(1.0 + gain * deficit, 0.0, 1.0 + gain);
+  }
+  return factor;
 }
 
 void GeneratorCore::arrive(const StepInput& in) {
   const double u = std::max(0.0, in.ego.speed_mps);
-  const double forward = regulation(Direction::kForward, in);
-  const double backward = regulation(Direction::kBackward, in);
+  const std::array<double, 2> regulated = regulation(in);
   for (EdgeStream& s : edges_) {
     const ObservedStream& stream = this->stream(s.dir);
     if (stream.empty()) continue;
-    s.accumulated += rate(s, u) * (s.dir == Direction::kForward ? forward : backward) * scenario_.step_s;
+    s.accumulated += rate(s, u) * regulated[dir_index(s.dir)] * scenario_.step_s;
     while (s.accumulated >= s.next) {
       s.accumulated -= s.next;
       s.next = rng_.exponential(1.0);
@@ -257,20 +269,10 @@ bool GeneratorCore::platoon_fits(const Platoon& platoon, Direction dir, int lane
   const StreamVehicle& tail = platoon.members.back();
   const StreamVehicle& head = platoon.members.front();
   const double tail_p = leader_p - tail.offset_m;
-  // Whatever follows it (the window's vehicles near the edge) and whatever leads it must have room.
-  if (!fits(dir, lane, tail_p, tail.vehicle) || !fits(dir, lane, leader_p, head.vehicle)) {
-    // fits() may have failed on a zone vehicle inside the platoon's span: judged below.
-    const Occupant* behind = index_.follower(dir, lane, tail_p, kNoVehicle);
-    const Occupant* ahead = index_.leader(dir, lane, leader_p, kNoVehicle);
-    const bool behind_ok = behind == nullptr || zone_.owns(behind->id) ||
-                           gap_between(Occupant{kNoVehicle, tail_p, tail.vehicle.speed_mps, 0.0, tail.vehicle.length_m},
-                                       behind->progress_m, behind->length_m) >=
-                               wanted_gap_m(tail.vehicle.driver.car_following.idm, behind->speed_mps, tail.vehicle.speed_mps);
-    const bool ahead_ok = ahead == nullptr || gap_between(*ahead, leader_p, head.vehicle.length_m) >=
-                                                  wanted_gap_m(head.vehicle.driver.car_following.idm,
-                                                               head.vehicle.speed_mps, ahead->speed_mps);
-    if (!behind_ok || !ahead_ok) return false;
-  }
+  // Whatever follows it (the window's vehicles near the edge) and whatever leads it must have room;
+  // a zone vehicle crowding its tail is inside its span, judged below.
+  const Occupant* crowding = crowding_follower(dir, lane, tail_p, tail.vehicle);
+  if ((crowding != nullptr && !zone_.owns(crowding->id)) || !room_ahead(dir, lane, leader_p, head.vehicle)) return false;
   // Zone vehicles within its span: faster ones are taken to have passed it (they leave, far ahead
   // of the driver); a slower one (not yet reached by the edge) makes the lane unusable.
   const double from = tail_p - tail.vehicle.length_m - config_.front_entry_margin_m;
@@ -304,6 +306,7 @@ bool GeneratorCore::place_from_ahead(EdgeStream& s, const WindowBounds& w) {
     for (const StreamVehicle& m : platoon.members) {
       add_to_zone(make(m.vehicle, s.dir, lane, leader_p - m.offset_m, m.vehicle.speed_mps));
     }
+    index_.sort();  // the next platoon in the queue sees this one
     return true;
   }
   return false;
@@ -312,7 +315,6 @@ bool GeneratorCore::place_from_ahead(EdgeStream& s, const WindowBounds& w) {
 void GeneratorCore::add_to_zone(const Vehicle& v) {
   zone_.add(v);
   add_to_index(index_, v.direction, v.lane, v.lane, v.id, v.progress_m(), v.speed_mps, 0.0, v.length_m);
-  index_.sort();
   ++counters_.ahead;
 }
 

@@ -113,13 +113,17 @@ class GeneratorCore {
   bool platoon_fits(const Platoon& platoon, Direction dir, int lane, double leader_p,
                     std::vector<VehicleId>& in_the_way) const;
   void add_to_zone(const Vehicle& v);
+  // Room for `v` at `progress_m`: the gap its driver wants to the vehicle ahead, and the gap the
+  // vehicle behind wants to it (crowding_follower: that vehicle if it lacks it, else nullptr).
+  bool room_ahead(Direction dir, int lane, double progress_m, const Vehicle& v) const;
+  const Occupant* crowding_follower(Direction dir, int lane, double progress_m, const Vehicle& v) const;
   bool fits(Direction dir, int lane, double progress_m, const Vehicle& v) const;
   Handoff birth(const Vehicle& model, Direction dir, int lane, double progress_m, double speed_mps,
                 const WindowBounds& w, Step step, HandoffReason reason);
   double rate(const EdgeStream& s, double u) const;
-  // Arrivals of a direction scaled by how far its vehicles in the window are from the stream's
-  // density times the window's length (scenario demand.regulation_gain).
-  double regulation(Direction dir, const StepInput& in) const;
+  // Per direction (dir_index), the factor on its arrivals: how far its vehicles in the window are
+  // from the stream's density times the window's length (scenario demand.regulation_gain).
+  std::array<double, 2> regulation(const StepInput& in) const;
 
   ScenarioConfig scenario_;
   GeneratorConfig config_;
