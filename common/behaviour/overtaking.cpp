@@ -186,11 +186,12 @@ PassReview review_pass(const OvertakingParams& p, const OvertakingSituation& s) 
   r.remaining = plan_pass(p, s);
   if (relative_distance_to_pass_m(p, s) <= 0.0 && room_to_return(p, s)) {
     r.action = PassAction::kReturn;
+    r.safe_to_finish = true;
     return r;
   }
-  const bool safe_to_finish =
+  r.safe_to_finish =
       r.remaining.feasible && gap_needed_m(r.remaining, s.oncoming_speed_mps, p.abort_margin_s) <= s.oncoming_distance_m;
-  r.action = safe_to_finish || committed(p, s) ? PassAction::kContinue : PassAction::kAbort;
+  r.action = r.safe_to_finish || committed(p, s) ? PassAction::kContinue : PassAction::kAbort;
   return r;
 }
 

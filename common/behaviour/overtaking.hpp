@@ -74,6 +74,12 @@ struct OvertakingParams {
   // A pass in which the overtaker's rear is already ahead of the overtaken vehicle's front minus
   // this share of the overtaken vehicle's length is finished rather than aborted.
   double commit_share = 0.5;
+  // Moving back into the own lane (after a pass, or aborting one) the overtaker accepts any gap in
+  // which neither it, behind its new leader, nor its new follower, behind it, has to brake harder
+  // than this to keep its standstill gap (kinematics at constant speeds: closing^2 / (2 (gap -
+  // s0))). Drivers cut back in at short time gaps when the oncoming lane is needed; the full
+  // return_time_gap_s is what they aim for, not what they insist on.
+  double return_decel_mps2 = 3.0;
 };
 
 enum class OvertakingKind : std::uint8_t { kFlying = 0, kAccelerated = 1 };
@@ -157,6 +163,8 @@ enum class PassAction : std::uint8_t {
 struct PassReview {
   PassAction action = PassAction::kContinue;
   PassPlan remaining;  // the rest of the pass as planned now
+  // The rest can be finished with abort_margin_s to spare before the oncoming vehicle.
+  bool safe_to_finish = false;
 };
 
 PassReview review_pass(const OvertakingParams& p, const OvertakingSituation& s);

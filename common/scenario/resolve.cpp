@@ -104,6 +104,7 @@ OvertakingParams resolve_overtaking(const Overtaking& o) {
   p.hidden_oncoming_speed_mps = kph_to_mps(o.hidden_oncoming_speed_kph());
   p.abort_margin_s = o.abort_margin_s();
   p.commit_share = o.commit_share();
+  p.return_decel_mps2 = o.return_decel_mps2();
   return p;
 }
 

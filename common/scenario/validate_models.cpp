@@ -102,6 +102,7 @@ void check_overtaking(const Cursor& top, const Scenario& s) {
   c.range("hidden_oncoming_speed_kph", o.hidden_oncoming_speed_kph(), 0.0, 250.0);
   c.range("abort_margin_s", o.abort_margin_s(), 0.0, 60.0);
   c.range("commit_share", o.commit_share(), 0.0, 1.0);
+  c.range("return_decel_mps2", o.return_decel_mps2(), 0.0, 15.0, true);
 }
 
 }  // namespace entourage::scenario::detail

@@ -67,7 +67,8 @@ Obstacle obstacle_in(const Vehicle& v, const LaneIndex& index, int lane, const D
       const double gap = std::max(0.0, oncoming_gap(*o, v.progress_m(), v.length_m));
       const double closing = v.speed_mps + o->speed_mps;
       // Both drivers stop short of the meeting point: each has half the gap.
-      if (closing > 0.0 && gap < rules.oncoming_reaction_s * closing) ob.gap_m = std::min(ob.gap_m, 0.5 * gap);
+      // Also when both stand: one that stopped facing the other must not creep towards it.
+      if (gap < rules.oncoming_reaction_s * closing + rules.oncoming_near_m) ob.gap_m = std::min(ob.gap_m, 0.5 * gap);
     }
   }
   ob.closing_mps = v.speed_mps;
@@ -90,6 +91,15 @@ double emergency_limit(const Vehicle& v, const CarFollowingParams& cf, double ga
   return a;
 }
 
+// An overtaker cutting back in behind a leader at a short gap (and settling behind it afterwards)
+// brakes as the kinematics need, at least comfortably, instead of the car-following model's far
+// harder reaction to a gap below its desired one: the constant-acceleration heuristic of Kesting,
+// Treiber & Helbing (2010) in its simplest form. Inside the standstill gap there is no floor.
+double cut_in_floor_mps2(const Vehicle& v, const CarFollowingParams& cf, const LeaderView& leader) {
+  const double needed = keep_gap_decel_mps2(leader.gap_m, cf.idm.min_gap_m, v.speed_mps - leader.speed_mps);
+  return -std::max(cf.idm.comfort_decel_mps2, needed);
+}
+
 Longitudinal longitudinal(const Vehicle& v, const CarFollowingParams& cf, const LaneIndex& index,
                           const DrivingEnvironment& env) {
   const bool hdm = cf.human_driver;
@@ -100,14 +110,16 @@ Longitudinal longitudinal(const Vehicle& v, const CarFollowingParams& cf, const 
   std::array<LeaderView, 2> nearest{};
   std::array<Obstacle, 2> obstacles{};
   const Occupied occ = occupied(v);
+  const int returning_to = v.overtaking.phase == OvertakingPhase::kReturning ? env.lanes(v.direction) - 1 : -1;
   double decided = kInfinity;
   for (int i = 0; i < occ.count; ++i) {
     const int lane = occ.lanes[static_cast<std::size_t>(i)];
     const std::size_t n = leaders_in(v, index, lane, views.data(), anticipate);
     counts[static_cast<std::size_t>(i)] = n;
     if (n > 0) nearest[static_cast<std::size_t>(i)] = views[0];
-    const double a = hdm ? hdm_instant_accel_mps2(cf, cf.hdm, v.hdm_errors, v.speed_mps, views.data(), n)
+    double a = hdm ? hdm_instant_accel_mps2(cf, cf.hdm, v.hdm_errors, v.speed_mps, views.data(), n)
                          : car_following_accel_mps2(cf, v.speed_mps, n > 0 ? views.data() : nullptr);
+    if (n > 0 && lane == returning_to) a = std::max(a, cut_in_floor_mps2(v, cf, views[0]));
     decided = std::min(decided, a);
     const Obstacle ob = obstacle_in(v, index, lane, env);
     obstacles[static_cast<std::size_t>(i)] = ob;
@@ -169,6 +181,13 @@ double stopping_decel_mps2(double gap_m, double closing_mps) {
   if (closing_mps <= 0.0) return 0.0;
   const double room = gap_m - kEmergencyStandstillGap_m;
   return room > 0.0 ? closing_mps * closing_mps / (2.0 * room) : kInfinity;
+}
+
+double keep_gap_decel_mps2(double gap_m, double min_gap_m, double closing_mps) {
+  const double room_m = gap_m - min_gap_m;
+  if (room_m < 0.0) return kInfinity;
+  if (closing_mps <= 0.0) return 0.0;
+  return room_m > 0.0 ? closing_mps * closing_mps / (2.0 * room_m) : kInfinity;
 }
 
 double accel_behind(const Vehicle& v, const CarFollowingParams& cf, const Occupant* leader, bool* emergency) {

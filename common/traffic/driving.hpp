@@ -42,6 +42,10 @@ double accel_behind(const Vehicle& v, const Occupant* leader, bool* emergency = 
 // before the gap closes (0 if not closing).
 double stopping_decel_mps2(double gap_m, double closing_mps);
 
+// The deceleration that keeps `min_gap_m` to a leader `gap_m` ahead when closing in on it at
+// `closing_mps`, both at constant speed (0 if not closing); infinite inside the standstill gap.
+double keep_gap_decel_mps2(double gap_m, double min_gap_m, double closing_mps);
+
 // The full decision of one driver for this step.
 Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env);
 

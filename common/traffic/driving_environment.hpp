@@ -27,6 +27,8 @@ struct DrivingRules {
   // A driver brakes for an opposite-direction vehicle in its own lane (an overtaker that has not
   // made it back) once the time to meet it is below this.
   double oncoming_reaction_s = 4.0;
+  // ... and always once it is this close, whatever the speeds (both may stand).
+  double oncoming_near_m = 30.0;
 };
 
 class DrivingEnvironment {

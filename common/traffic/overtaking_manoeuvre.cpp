@@ -16,6 +16,8 @@ constexpr int kMaxPassedVehicles = 3;
 // ahead or behind (another overtaker; the time gap for one behind, at its speed).
 constexpr double kBusyLaneAhead_m = 150.0;
 constexpr double kBusyLaneBehind_s = 3.0;
+// ... or an oncoming vehicle beside us, or less than this past us.
+constexpr double kBesideProbe_m = 10.0;
 // An abort brakes at this multiple of the driver's comfortable deceleration (up to its limit).
 constexpr double kAbortBrakeFactor = 2.0;
 
@@ -33,8 +35,13 @@ double return_gap_m(const OvertakingParams& p, const Vehicle& v, double speed_mp
   return p.return_time_gap_s * speed_mps + v.driver.car_following.idm.min_gap_m;
 }
 
-// Is another vehicle of our direction using the oncoming lane near us?
+// Is the oncoming lane in use near us: by another vehicle of our direction, or by an oncoming one
+// still beside us (the decision model weighs the ones ahead)?
 bool oncoming_lane_busy(const Vehicle& v, const LaneIndex& index, int lane) {
+  if (const Occupant* o = index.oncoming(v.direction, lane, v.progress_m() - v.length_m - kBesideProbe_m)) {
+    const double gap_m = oncoming_gap(*o, v.progress_m(), v.length_m);
+    if (gap_m <= 0.0 && gap_m > -(o->length_m + v.length_m + kBesideProbe_m)) return true;
+  }
   if (const Occupant* ahead = index.leader(v.direction, lane, v.progress_m(), v.id)) {
     if (gap_between(*ahead, v.progress_m(), v.length_m) < kBusyLaneAhead_m) return true;
   }
@@ -49,9 +56,36 @@ double passing_speed_mps(const OvertakingParams& p, double desired_speed_mps) {
   return p.speed_excess_ratio * desired_speed_mps;
 }
 
-// Lateral move back into the own lane if it has room now.
-bool can_return(const Vehicle& v, const CarFollowingParams& cf, const LaneIndex& index, const DrivingEnvironment& env) {
-  return evaluate_lane_change(v, cf, index, own_lane(v, env)).safe;
+// An oncoming vehicle is so close that the drivers brake for each other (the same time to meet,
+// or distance, that makes an oncoming driver brake for the overtaker).
+bool oncoming_threat(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env) {
+  const Occupant* o = index.oncoming(v.direction, oncoming_lane(v, env), v.progress_m());
+  if (o == nullptr) return false;
+  const double gap_m = oncoming_gap(*o, v.progress_m(), v.length_m);
+  const DrivingRules& rules = env.rules();
+  return gap_m < rules.oncoming_reaction_s * (v.speed_mps + o->speed_mps) + rules.oncoming_near_m;
+}
+
+// Lateral move back into the own lane: the gap beside it fits when neither the overtaker behind
+// its new leader nor the new follower behind the overtaker has to brake harder than
+// return_decel_mps2 (the follower is assumed to keep the overtaker's standstill gap); with an
+// oncoming vehicle about to meet it, up to the overtaker's own braking limit (taken for the
+// follower's too).
+bool can_return(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env) {
+  const double limit_mps2 =
+      oncoming_threat(v, index, env) ? v.driver.max_decel_mps2 : env.overtaking().return_decel_mps2;
+  const double min_gap_m = v.driver.car_following.idm.min_gap_m;
+  const LaneIndex::Neighbours n = index.neighbours(v.direction, own_lane(v, env), v.progress_m(), v.id);
+  if (n.leader != nullptr) {
+    const double gap_m = gap_between(*n.leader, v.progress_m(), v.length_m);
+    if (keep_gap_decel_mps2(gap_m, min_gap_m, v.speed_mps - n.leader->speed_mps) > limit_mps2) return false;
+  }
+  if (n.follower != nullptr) {
+    const Occupant self{v.id, v.progress_m(), v.speed_mps, 0.0, v.length_m};
+    const double gap_m = gap_between(self, n.follower->progress_m, n.follower->length_m);
+    if (keep_gap_decel_mps2(gap_m, min_gap_m, n.follower->speed_mps - v.speed_mps) > limit_mps2) return false;
+  }
+  return true;
 }
 
 OvertakingStep consider_start(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env,
@@ -100,6 +134,35 @@ OvertakingSituation pass_situation(const Vehicle& v, const Occupant& overtaken, 
   return overtaking_situation(v, chain, index, env, desired_speed_mps);
 }
 
+OvertakingStep start_return(OvertakingStep out, const Vehicle& v, const DrivingEnvironment& env) {
+  out.state.phase = OvertakingPhase::kReturning;
+  out.lateral_start = true;
+  out.lane_change = start_moving(v, own_lane(v, env), env.overtaking().lateral_s);
+  return out;
+}
+
+OvertakingStep start_abort(OvertakingStep out) {
+  out.state.phase = OvertakingPhase::kAborting;
+  ++out.state.aborted;
+  out.aborted = true;
+  return out;
+}
+
+// Past the overtaken vehicle without the full return gap in front of it (a platoon): cut back in
+// if the gap beside allows it; take in the next vehicle only if that pass can still be finished
+// with the margin against the oncoming traffic; otherwise abort into a gap behind.
+OvertakingStep past_without_room(OvertakingStep out, const Vehicle& v, const Occupant& overtaken,
+                                 const LaneIndex& index, const DrivingEnvironment& env,
+                                 double desired_speed_mps) {
+  if (can_return(v, index, env)) return start_return(out, v, env);
+  const Occupant* next = index.leader(v.direction, own_lane(v, env), overtaken.progress_m, overtaken.id);
+  if (next == nullptr) return out;
+  const PassReview next_review = review_pass(env.overtaking(), pass_situation(v, *next, index, env, desired_speed_mps));
+  if (!next_review.safe_to_finish) return start_abort(out);
+  out.state.overtaken = next->id;
+  return out;
+}
+
 OvertakingStep continue_pass(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env,
                              double desired_speed_mps) {
   const OvertakingParams& p = env.overtaking();
@@ -109,78 +172,85 @@ OvertakingStep continue_pass(const Vehicle& v, const LaneIndex& index, const Dri
   out.rng_state = v.driver.rng_state;
   out.desired_speed_mps = passing_speed_mps(p, desired_speed_mps);
   if (v.lane_change.active()) return out;  // still moving out
-  const CarFollowingParams cf = local_params(v, env);
   const Occupant* overtaken = find(index, v.direction, own_lane(v, env), v.overtaking.overtaken);
   if (overtaken == nullptr) {  // gone (left the region, or changed lane): return when there is room
-    if (can_return(v, cf, index, env)) {
-      out.state.phase = OvertakingPhase::kReturning;
-      out.lateral_start = true;
-      out.lane_change = start_moving(v, own_lane(v, env), p.lateral_s);
-    }
-    return out;
+    return can_return(v, index, env) ? start_return(out, v, env) : out;
   }
   const OvertakingSituation s = pass_situation(v, *overtaken, index, env, desired_speed_mps);
-  const PassReview review = review_pass(p, s);
-  switch (review.action) {
-    case PassAction::kReturn:
-      if (can_return(v, cf, index, env)) {
-        out.state.phase = OvertakingPhase::kReturning;
-        out.lateral_start = true;
-        out.lane_change = start_moving(v, own_lane(v, env), p.lateral_s);
-      }
-      break;
+  switch (review_pass(p, s).action) {
+    case PassAction::kReturn:  // far enough ahead, and room in front of the overtaken vehicle
+      if (can_return(v, index, env)) return start_return(out, v, env);
+      return past_without_room(out, v, *overtaken, index, env, desired_speed_mps);
     case PassAction::kAbort:
-      out.state.phase = OvertakingPhase::kAborting;
-      ++out.state.aborted;
-      out.aborted = true;
-      break;
+      return start_abort(out);
     case PassAction::kContinue:
-      // Past the overtaken vehicle but no room in front of it: the pass takes in the next one.
       if (relative_distance_to_pass_m(p, s) <= 0.0) {
-        if (const Occupant* next = index.leader(v.direction, own_lane(v, env), overtaken->progress_m, overtaken->id)) {
-          out.state.overtaken = next->id;
-        }
+        return past_without_room(out, v, *overtaken, index, env, desired_speed_mps);
       }
-      break;
+      return out;
   }
   return out;
 }
 
+// The vehicle of the own lane an aborting overtaker drops back behind: from the nearest one whose
+// centre is ahead of the overtaker's, backwards, the first with a gap behind it that takes the
+// overtaker and both standstill gaps (or the rearmost one).
+const Occupant* abort_target(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env) {
+  const std::vector<Occupant>& lane = index.lane(v.direction, own_lane(v, env));
+  const std::size_t ahead = index.first_not_behind(v.direction, own_lane(v, env), v.progress_m(), v.id);
+  if (ahead >= lane.size()) return lane.empty() ? nullptr : &lane.back();
+  const double needed_m = v.length_m + 2.0 * v.driver.car_following.idm.min_gap_m;
+  for (std::size_t k = ahead; k > 0; --k) {
+    const Occupant& front = lane[k];
+    const Occupant& rear = lane[k - 1];
+    if (gap_between(front, rear.progress_m, rear.length_m) >= needed_m) return &front;
+  }
+  return &lane.front();
+}
+
+// Aborting: brake to drop back behind the abort target, and move back into the own lane as soon as
+// the gap beside allows it.
 OvertakingStep continue_abort(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env,
                               double desired_speed_mps) {
-  const OvertakingParams& p = env.overtaking();
   OvertakingStep out;
   out.state = v.overtaking;
   out.state.elapsed_s += env.dt_s();
   out.rng_state = v.driver.rng_state;
   out.desired_speed_mps = desired_speed_mps;
+  if (can_return(v, index, env)) return start_return(out, v, env);
   const CarFollowingParams cf = local_params(v, env);
-  const Occupant* overtaken = find(index, v.direction, own_lane(v, env), v.overtaking.overtaken);
-  const double behind_m = overtaken != nullptr ? gap_between(*overtaken, v.progress_m(), v.length_m) : 1e9;
-  if (behind_m >= cf.idm.min_gap_m && can_return(v, cf, index, env)) {
-    out.state.phase = OvertakingPhase::kReturning;
-    out.lateral_start = true;
-    out.lane_change = start_moving(v, own_lane(v, env), p.lateral_s);
-    return out;
-  }
   const double brake_mps2 = std::min(v.driver.max_decel_mps2, kAbortBrakeFactor * cf.idm.comfort_decel_mps2);
-  if (overtaken == nullptr) return out;
+  const Occupant* target = abort_target(v, index, env);
+  if (target == nullptr) return out;
+  const double behind_m = gap_between(*target, v.progress_m(), v.length_m);
   if (behind_m < cf.idm.min_gap_m) {
     out.accel_cap_mps2 = -brake_mps2;  // still beside it: drop back
   } else {
-    const LeaderView lv{behind_m, overtaken->speed_mps, overtaken->accel_mps2};
+    const LeaderView lv{behind_m, target->speed_mps, target->accel_mps2};
     out.accel_cap_mps2 = std::max(-brake_mps2, car_following_accel_mps2(cf, v.speed_mps, &lv));
   }
   return out;
 }
 
-OvertakingStep continue_return(const Vehicle& v, const DrivingEnvironment& env, double desired_speed_mps) {
+// Back in the own lane closer behind the new leader than the car-following model likes (a cut back
+// in at a short gap): the model alone would brake far harder than the situation needs.
+bool settling(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env) {
+  const Occupant* leader = index.leader(v.direction, own_lane(v, env), v.progress_m(), v.id);
+  if (leader == nullptr) return false;
+  const CarFollowingParams cf = local_params(v, env);
+  const LeaderView lv{gap_between(*leader, v.progress_m(), v.length_m), leader->speed_mps, leader->accel_mps2};
+  return lv.gap_m >= cf.idm.min_gap_m && car_following_accel_mps2(cf, v.speed_mps, &lv) < -cf.idm.comfort_decel_mps2;
+}
+
+OvertakingStep continue_return(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env,
+                               double desired_speed_mps) {
   OvertakingStep out;
   out.state = v.overtaking;
   out.state.elapsed_s += env.dt_s();
   out.rng_state = v.driver.rng_state;
   out.desired_speed_mps = desired_speed_mps;
   if (!v.lane_change.active() && v.lane < env.lanes(v.direction)) {
+    if (settling(v, index, env)) return out;
     out.state.phase = OvertakingPhase::kNone;  // back in the own lane
     out.state.next_decision_s = env.overtaking().decision_interval_s;
   } else if (v.overtaking.phase == OvertakingPhase::kReturning && v.lane >= env.lanes(v.direction)) {
@@ -259,7 +329,7 @@ OvertakingStep overtaking_step(const Vehicle& v, const LaneIndex& index, const D
     case OvertakingPhase::kAborting:
       return continue_abort(v, index, env, desired_speed_mps);
     case OvertakingPhase::kReturning:
-      return continue_return(v, env, desired_speed_mps);
+      return continue_return(v, index, env, desired_speed_mps);
   }
   OvertakingStep out;
   out.state = v.overtaking;

@@ -4,8 +4,9 @@
 // up, one draw per decision), which vehicles to pass (the leader and, when it drives in a tight
 // platoon, up to a few vehicles ahead of it until a gap big enough to return into), the moves out
 // and back as lateral movements between the own lane and the oncoming lane, the pass reviewed at
-// every step, and the abort: brake until behind the overtaken vehicle, then return as soon as the
-// own lane has room.
+// every step, the return into any gap of the own lane that fits kinematically (a platoon's gaps
+// included), and the abort: drop back towards the nearest gap that takes the overtaker and return
+// as soon as the gap beside fits.
 //
 // Only drivers whose lane-change model is "overtaking", in the leftmost lane of their direction, on
 // a road with oncoming traffic (DrivingEnvironment::two_way) overtake.

@@ -1,6 +1,7 @@
 // The rural scenario end to end (every service a real process over DDS): vehicles overtake in the
 // oncoming lane, nobody collides head-on or otherwise, and traffic slows for the curve with its
-// lower limit.
+// lower limit. Ten minutes: over five, how many overtakings the window sees depends much on the
+// platoon the ego happens to drive in (1 to 28 for seeds 1 to 4).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -20,7 +21,7 @@ constexpr int kDomainRural = 120;
 TEST(Rural, OvertakingsInTheOncomingLaneWithoutCollisionsAndSlowerInTheCurve) {
   const std::string dir = fresh_dir("rural");
   const std::string scenario_path = source("scenarios/rural.pbtxt");
-  const CommandResult r = run_command(bin("entourage") + " run " + scenario_path + " --lockstep --quiet --domain " +
+  const CommandResult r = run_command(bin("entourage") + " run " + scenario_path + " --lockstep --duration 600 --quiet --domain " +
                                       std::to_string(kDomainRural) + " --record " + dir + "/r.mcap");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(no_process_uses_domain(kDomainRural));
@@ -38,7 +39,7 @@ TEST(Rural, OvertakingsInTheOncomingLaneWithoutCollisionsAndSlowerInTheCurve) {
     EXPECT_TRUE(c.passed) << c.name << ": " << c.detail;  // no_overlap covers head-on collisions
   }
   const recording::Manoeuvres m = recording::count_manoeuvres(t, sc.config);
-  EXPECT_GE(m.overtakings, 3U) << "too few overtakings in five minutes of rural traffic";
+  EXPECT_GE(m.overtakings, 3U) << "too few overtakings in ten minutes of rural traffic";
 
   // Vehicles in the curve (70 km/h zone, 3850-4650 m) drive slower than on the straight before it.
   double in_curve = 0.0;

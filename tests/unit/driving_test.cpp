@@ -286,6 +286,76 @@ TEST(Overtaking, PassChainTakesInATightPlatoonUpToAGap) {
   EXPECT_NEAR(c.room_ahead_m, (1170.0 - 2.25) - (1054.5 + 8.25), 1e-9);
 }
 
+// A platoon of cars at `speed` with `spacing_m` between centres, ids from `first_id`, the rearmost
+// at `rear_s_m`.
+void add_platoon(MiniWorld& w, VehicleId first_id, int count, double rear_s_m, double spacing_m, double speed) {
+  for (int k = 0; k < count; ++k) {
+    w.vehicles.push_back(car(first_id + static_cast<VehicleId>(k), Direction::kForward, 0, rear_s_m + k * spacing_m,
+                             speed, speed, LaneChangeModel::kNone));
+  }
+}
+
+// In the oncoming lane, passing, just past `overtaken`.
+Vehicle overtaker_in_pass(VehicleId id, double s_m, double speed, VehicleId overtaken) {
+  Vehicle me = car(id, Direction::kForward, 1, s_m, speed, 25.0, LaneChangeModel::kOvertaking);
+  me.lane_change.from_lane = me.lane_change.to_lane = 1;
+  me.overtaking.phase = OvertakingPhase::kPassing;
+  me.overtaking.overtaken = overtaken;
+  me.overtaking.started = 1;
+  return me;
+}
+
+TEST(Overtaking, CutsBackIntoAGapOfAPlatoonAtAComfortableDeceleration) {
+  // Cars at 21 m/s, 41 m apart (36.5 m gaps: room for the 19.1 m the return gap asks). The
+  // overtaker, at 27 m/s, is past the first one. Behind the next one the car-following model alone
+  // would brake at its limit (its desired gap at 27 m/s is over 80 m); the kinematics need 1.4 m/s^2.
+  MiniWorld w(rural());
+  add_platoon(w, 10, 6, 1000.0, 41.0, 21.0);
+  w.vehicles.push_back(overtaker_in_pass(1, 1000.0 + 2.25 + 14.7 + 2.25 + 0.5, 27.0, 10));
+  double hardest_brake = 0.0;
+  while (w.get(1).overtaking.active()) {
+    w.step();
+    hardest_brake = std::min(hardest_brake, w.get(1).accel_mps2);
+    ASSERT_LT(w.t(), 60.0) << "never settled back in its own lane";
+  }
+  EXPECT_EQ(w.get(1).lane, 0);
+  EXPECT_LT(w.get(1).s_m, w.get(11).s_m);  // between the first two, not past the whole platoon
+  EXPECT_GT(w.get(1).s_m, w.get(10).s_m);
+  EXPECT_GT(hardest_brake, -3.0);
+  EXPECT_GT(w.min_clearance_m, 1.5);
+}
+
+TEST(Overtaking, AbortsAlongAPlatoonWhenTheNextPassCannotBeFinished) {
+  // Past the first car of a tight platoon (no gap it can cut into at its speed) when an oncoming
+  // car comes into view: it must not take in the next car; it brakes and drops back into a gap.
+  MiniWorld w(rural());
+  // Cars at 21 m/s, 24 m apart: the overtaker, at 27 m/s, has cleared the first by the return gap
+  // (14.6 m) but is only 0.4 m behind the second's rear, too close to cut in at its speed.
+  add_platoon(w, 10, 5, 1000.0, 24.0, 21.0);
+  w.vehicles.push_back(overtaker_in_pass(1, 1000.0 + 2.25 + 14.6 + 2.25 + 0.01, 27.0, 10));
+  w.vehicles.push_back(car(3, Direction::kBackward, 0, 1020.0 + 200.0, 25.0, 25.0, LaneChangeModel::kNone));
+  while (w.get(1).overtaking.active()) {
+    w.step();
+    ASSERT_LT(w.t(), 60.0) << "never got back into its own lane";
+  }
+  EXPECT_EQ(w.get(1).overtaking.aborted, 1U);
+  EXPECT_EQ(w.get(1).lane, 0);
+  EXPECT_LT(w.get(1).s_m, w.get(11).s_m);
+  for (int i = 0; i < 200; ++i) w.step();  // the oncoming car goes by
+  EXPECT_GT(w.min_clearance_m, 0.0);
+}
+
+TEST(OncomingReaction, TwoVehiclesStoppedFacingEachOtherDoNotCreep) {
+  MiniWorld w(rural());
+  Vehicle intruder = car(1, Direction::kForward, 1, 1000.0, 0.0, 25.0, LaneChangeModel::kNone);
+  intruder.lane_change.from_lane = intruder.lane_change.to_lane = 1;
+  w.vehicles.push_back(intruder);
+  w.vehicles.push_back(car(2, Direction::kBackward, 0, 1005.5, 0.0, 25.0, LaneChangeModel::kNone));
+  for (int i = 0; i < 300; ++i) w.step();
+  EXPECT_DOUBLE_EQ(w.get(1).s_m, 1000.0);
+  EXPECT_DOUBLE_EQ(w.get(2).s_m, 1005.5);
+}
+
 TEST(OncomingReaction, ADriverBrakesForAnOvertakerInItsLane) {
   MiniWorld w(rural());
   Vehicle intruder = car(1, Direction::kForward, 1, 1000.0, 25.0, 25.0, LaneChangeModel::kNone);
