@@ -9,6 +9,17 @@ namespace entourage {
 namespace {
 // A new vehicle never starts closer than this share of the time gap behind another.
 constexpr double kMinTimeGapShare = 0.5;
+// Nothing enters a lane in which a vehicle of the other direction (an overtaker) would meet it
+// within this time.
+constexpr double kOncomingClearance_s = 8.0;
+
+bool oncoming_in_the_way(const LaneIndex& index, Direction dir, int lane, double progress_m, double speed_mps,
+                         const VehicleTypeConfig& type, const IdmParams& driver) {
+  const Occupant* o = index.oncoming(dir, lane, progress_m - type.length_m);
+  if (o == nullptr) return false;
+  const double gap_m = oncoming_gap(*o, progress_m, type.length_m);
+  return gap_m < kOncomingClearance_s * (speed_mps + o->speed_mps) + driver.min_gap_m;
+}
 }  // namespace
 
 IdmParams mean_idm(const VehicleTypeConfig& type) {
@@ -31,6 +42,7 @@ std::optional<EntrySpot> find_entry(const LaneIndex& index, Direction dir, doubl
   const int lanes = index.lanes(dir);
   std::optional<EntrySpot> best;
   for (int lane = 0; lane < (type.keep_right ? std::min(1, lanes) : lanes); ++lane) {
+    if (oncoming_in_the_way(index, dir, lane, progress_m, speed_mps, type, driver)) continue;
     const auto around = index.neighbours(dir, lane, progress_m, kNoVehicle);
     const Occupant* leader = around.leader;
     const Occupant* follower = around.follower;

@@ -32,7 +32,7 @@ struct EntrySpot {
 
 // The lane where a vehicle of `type` driven by `driver` can enter at progress `progress_m` of
 // `dir`, preferring the lane that lets it drive fastest (then the rightmost); nullopt if no lane
-// has room. `preferred` (if valid) wins ties. The follower there is judged with the same
+// has room. A lane that a vehicle of the other direction uses ahead (an overtaker) has no room. `preferred` (if valid) wins ties. The follower there is judged with the same
 // parameters (its own are not in the index).
 std::optional<EntrySpot> find_entry(const LaneIndex& index, Direction dir, double progress_m, double speed_mps,
                                     const VehicleTypeConfig& type, const IdmParams& driver, int preferred_lane = -1,

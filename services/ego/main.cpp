@@ -57,7 +57,7 @@ int run(const dds::ServiceContext& ctx, const EgoOptions& eo) {
   const auto& done = shell.done;
   if (!wait_for_peers_ready(inbox, ctx, status)) return dds::shutdown_requested() ? 0 : 1;
 
-  ego::EgoCore core(sc);
+  ego::EgoCore core(sc, ctx.seed);
   const double duration = eo.duration_s >= 0.0 ? eo.duration_s : sc.duration_s;
   Step last = static_cast<Step>(std::llround(duration / sc.step_s));
   dds::TopicCounts one_state{};

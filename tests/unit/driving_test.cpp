@@ -9,6 +9,7 @@
 
 #include "core_test_util.hpp"
 #include "traffic/driving.hpp"
+#include "traffic/entry.hpp"
 #include "traffic/lane_changes.hpp"
 #include "traffic/overtaking_manoeuvre.hpp"
 #include "traffic/world.hpp"
@@ -354,6 +355,25 @@ TEST(OncomingReaction, TwoVehiclesStoppedFacingEachOtherDoNotCreep) {
   for (int i = 0; i < 300; ++i) w.step();
   EXPECT_DOUBLE_EQ(w.get(1).s_m, 1000.0);
   EXPECT_DOUBLE_EQ(w.get(2).s_m, 1005.5);
+}
+
+TEST(Entry, NothingEntersALaneAnOvertakerOfTheOtherDirectionComesDown) {
+  // An oncoming car overtakes in the forward lane (backward lane 1) 300 m ahead of the rear edge:
+  // a forward vehicle born there now would meet it head-on within seconds.
+  VehicleTypeConfig type;
+  type.length_m = 4.5;
+  IdmParams driver;
+  LaneIndex index(1, 1);
+  const double edge_m = 1000.0;
+  EXPECT_TRUE(find_entry(index, Direction::kForward, edge_m, 25.0, type, driver).has_value());
+  add_to_index(index, Direction::kBackward, 1, 1, 9, -(edge_m + 300.0), 25.0, 0.0, 4.5);
+  index.sort();
+  EXPECT_FALSE(find_entry(index, Direction::kForward, edge_m, 25.0, type, driver).has_value());
+  // Once it is behind the edge, the lane is free again.
+  LaneIndex later(1, 1);
+  add_to_index(later, Direction::kBackward, 1, 1, 9, -(edge_m - 50.0), 25.0, 0.0, 4.5);
+  later.sort();
+  EXPECT_TRUE(find_entry(later, Direction::kForward, edge_m, 25.0, type, driver).has_value());
 }
 
 TEST(OncomingReaction, ADriverBrakesForAnOvertakerInItsLane) {

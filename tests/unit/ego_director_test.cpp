@@ -57,6 +57,43 @@ TEST(EgoCore, ChangesLaneAroundAStoppedCarWhenItMay) {
   EXPECT_GT(e.s_m, blocker.s_m);
 }
 
+TEST(EgoCore, OvertakesASlowTruckInTheOncomingLaneOnARuralRoad) {
+  ScenarioConfig sc = testing::road_scenario(1, 1, RoadKind::kRural);
+  sc.ego.driver.desired_speed_mps = 25.0;
+  sc.ego.start_speed_mps = 20.0;
+  ego::EgoCore core(sc, 7);
+  EgoObservation e = core.initial();
+  ObservedVehicle truck = stopped_car(sc.ego.start_s_m + 60.0);
+  truck.length_m = 16.5;
+  truck.speed_mps = 16.0;
+  bool used_oncoming_lane = false;
+  for (Step k = 1; k <= 900; ++k) {
+    e = core.step(k, {truck});
+    truck.s_m += truck.speed_mps * sc.step_s;
+    used_oncoming_lane = used_oncoming_lane || e.target_lane == 1;
+  }
+  EXPECT_TRUE(used_oncoming_lane);
+  EXPECT_EQ(e.lane, 0);
+  EXPECT_GT(e.s_m, truck.s_m + 20.0);
+}
+
+TEST(EgoCore, StaysInItsLaneOnARuralRoadWithoutLaneChanges) {
+  ScenarioConfig sc = testing::road_scenario(1, 1, RoadKind::kRural);
+  sc.ego.driver.desired_speed_mps = 25.0;
+  sc.ego.driver.lane_changes = false;
+  ego::EgoCore core(sc, 7);
+  EgoObservation e = core.initial();
+  ObservedVehicle truck = stopped_car(sc.ego.start_s_m + 60.0);
+  truck.length_m = 16.5;
+  truck.speed_mps = 16.0;
+  for (Step k = 1; k <= 900; ++k) {
+    e = core.step(k, {truck});
+    truck.s_m += truck.speed_mps * sc.step_s;
+    ASSERT_EQ(e.target_lane, 0);
+  }
+  EXPECT_LT(e.s_m, truck.s_m);
+}
+
 TEST(EgoCore, FollowsASpeedProfile) {
   ScenarioConfig sc = minimal_scenario();
   sc.ego.driver.use_speed_profile = true;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/random.hpp"
 #include "traffic/lateral.hpp"
 
 namespace entourage::ego {
@@ -12,7 +13,17 @@ constexpr double kProfileRelaxation_s = 2.0;
 // IDM needs a positive desired speed; a profile target of 0 (stop) is followed by the relaxation.
 constexpr double kMinModelDesiredSpeed_mps = 1.0;
 
-DriverParams ego_driver(const EgoConfig& e) {
+// Label of the stand-in driver's random stream (its overtaking decisions), derived from the seed.
+constexpr std::uint64_t kEgoDriverStreamLabel = 0x65676f64726976ULL;  // "egodriv"
+
+// Lane changes as the road allows: MOBIL within the own carriageway, passes in the oncoming lane
+// on a road with oncoming traffic.
+LaneChangeModel ego_lane_changes(const EgoConfig& e, const DrivingEnvironment& env) {
+  if (!e.driver.lane_changes || e.driver.use_speed_profile) return LaneChangeModel::kNone;
+  return env.two_way() ? LaneChangeModel::kOvertaking : LaneChangeModel::kMobil;
+}
+
+DriverParams ego_driver(const EgoConfig& e, const DrivingEnvironment& env, std::uint64_t seed) {
   DriverParams d;
   IdmParams& idm = d.car_following.idm;
   idm.desired_speed_mps = e.driver.desired_speed_mps;
@@ -20,13 +31,16 @@ DriverParams ego_driver(const EgoConfig& e) {
   idm.max_accel_mps2 = e.driver.max_accel_mps2;
   idm.comfort_decel_mps2 = e.driver.comfort_decel_mps2;
   idm.min_gap_m = e.driver.min_gap_m;
-  d.lane_change = e.driver.lane_changes && !e.driver.use_speed_profile ? LaneChangeModel::kMobil : LaneChangeModel::kNone;
+  d.lane_change = ego_lane_changes(e, env);
   d.mobil.politeness = e.driver.politeness;
+  d.rng_state = Random::derived(seed, kEgoDriverStreamLabel).next_u64();
   return d;
 }
 }  // namespace
 
-EgoCore::EgoCore(const ScenarioConfig& scenario)
+EgoCore::EgoCore(const ScenarioConfig& scenario) : EgoCore(scenario, scenario.seed) {}
+
+EgoCore::EgoCore(const ScenarioConfig& scenario, std::uint64_t seed)
     : scenario_(scenario),
       road_(scenario.road),
       env_(scenario),
@@ -38,7 +52,7 @@ EgoCore::EgoCore(const ScenarioConfig& scenario)
   self_.s_m = e.start_s_m;
   self_.length_m = e.length_m;
   self_.width_m = e.width_m;
-  self_.driver = ego_driver(e);
+  self_.driver = ego_driver(e, env_, seed);
   self_.lane_change.from_lane = self_.lane_change.to_lane = e.lane;
   self_.lane_change.duration_s = self_.driver.lane_change_duration_s;
   if (e.driver.use_speed_profile) {

@@ -21,7 +21,9 @@ namespace entourage::ego {
 
 class EgoCore {
  public:
+  // `seed` seeds the stand-in driver's own decisions (its overtakings); default the scenario's.
   explicit EgoCore(const ScenarioConfig& scenario);
+  EgoCore(const ScenarioConfig& scenario, std::uint64_t seed);
 
   // The ego at step 0.
   EgoObservation initial() const { return observe(0); }
