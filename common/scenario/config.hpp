@@ -133,6 +133,7 @@ struct EgoDriverConfig {
   bool lane_changes = true;
   double politeness = 0.2;
   std::vector<std::pair<double, double>> profile;  // (s_m, speed_mps), increasing s
+  std::vector<std::pair<double, double>> stops;    // (at_s, duration_s), increasing at_s
 };
 
 struct EgoConfig {

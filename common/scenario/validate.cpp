@@ -168,6 +168,12 @@ void check_ego(const Cursor& top, const Scenario& s) {
     dc.range("comfort_decel_mps2", d.comfort_decel_mps2(), 0.0, 10.0, true);
     dc.range("min_gap_m", d.min_gap_m(), 0.0, 20.0);
     dc.range("politeness", d.politeness(), 0.0, 1.0);
+    for (int i = 0; i < d.stop_size(); ++i) {
+      const Cursor sc = dc.child(d.stop(i), "stop", i);
+      sc.range("at_s", d.stop(i).at_s(), 0.0, s.duration_s());
+      sc.range("duration_s", d.stop(i).duration_s(), 0.0, 86400.0);
+      if (i > 0 && d.stop(i).at_s() <= d.stop(i - 1).at_s()) sc.fail("at_s", "stops must have increasing at_s");
+    }
   }
   if (e.has_speed_profile()) {
     const SpeedProfile& p = e.speed_profile();

@@ -94,6 +94,33 @@ TEST(EgoCore, StaysInItsLaneOnARuralRoadWithoutLaneChanges) {
   EXPECT_LT(e.s_m, truck.s_m);
 }
 
+TEST(EgoCore, StopsForAsLongAsTheScenarioSaysThenDrivesOn) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.ego.driver.stops = {{10.0, 60.0}};
+  ego::EgoCore core(sc);
+  EgoObservation e = core.initial();
+  double stood_s = 0.0;
+  double first_standstill_s = -1.0;
+  double hardest_brake = 0.0;
+  for (Step k = 1; k <= 1500; ++k) {
+    e = core.step(k, {});
+    hardest_brake = std::min(hardest_brake, e.accel_mps2);
+    if (e.speed_mps == 0.0) {
+      stood_s += sc.step_s;
+      if (first_standstill_s < 0.0) first_standstill_s = e.time_s;
+    }
+    if (e.time_s < 10.0) {
+      ASSERT_GT(e.speed_mps, 0.0);
+    }
+  }
+  // From 30.6 m/s at 1.5 m/s^2: standing after about 20 s, for 60 s, then away again.
+  EXPECT_NEAR(first_standstill_s, 10.0 + sc.ego.driver.desired_speed_mps / 1.5, 0.5);
+  EXPECT_NEAR(stood_s, 60.0, 0.3);
+  EXPECT_GE(hardest_brake, -sc.ego.driver.comfort_decel_mps2 - 1e-9);
+  EXPECT_GT(e.speed_mps, 10.0);
+  EXPECT_EQ(e.target_lane, e.lane);
+}
+
 TEST(EgoCore, FollowsASpeedProfile) {
   ScenarioConfig sc = minimal_scenario();
   sc.ego.driver.use_speed_profile = true;

@@ -74,6 +74,19 @@ double EgoCore::profile_speed_mps(double s_m) const {
   return v0 + (v1 - v0) * (s_m - s0) / (s1 - s0);
 }
 
+bool EgoCore::stopping(double t_s) {
+  const auto& stops = scenario_.ego.driver.stops;
+  if (next_stop_ >= stops.size() || t_s < stops[next_stop_].first) return false;
+  if (standing_since_s_ < 0.0) {
+    if (self_.speed_mps <= 0.0) standing_since_s_ = t_s;
+    return true;
+  }
+  if (t_s - standing_since_s_ < stops[next_stop_].second) return true;
+  ++next_stop_;  // stood long enough: drive on
+  standing_since_s_ = -1.0;
+  return false;
+}
+
 EgoObservation EgoCore::step(Step step, const std::vector<ObservedVehicle>& world_prev) {
   index_.clear();
   for (const auto& o : world_prev) add_to_index(index_, o);
@@ -93,6 +106,13 @@ EgoObservation EgoCore::step(Step step, const std::vector<ObservedVehicle>& worl
     d.accel_mps2 = std::min(d.accel_mps2, track);
   } else {
     d = decide(self_, index_, env_);
+  }
+  if (stopping(static_cast<double>(step) * dt)) {
+    // Brake comfortably (harder if the model asks), start no lane change, stand.
+    const double brake_mps2 = -self_.driver.car_following.idm.comfort_decel_mps2;
+    d.accel_mps2 = self_.speed_mps > 0.0 ? std::min(d.accel_mps2, brake_mps2) : 0.0;
+    if (!self_.lane_change.active()) d.lane_change = self_.lane_change;
+    if (!self_.overtaking.active()) d.overtaking = self_.overtaking;
   }
   commit(self_, d, dt);
   return observe(step);

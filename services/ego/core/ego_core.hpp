@@ -36,6 +36,8 @@ class EgoCore {
 
  private:
   EgoObservation observe(Step step) const;
+  // Is the driver in one of its scenario stops at time t_s (braking for it, or standing)?
+  bool stopping(double t_s);
   double profile_speed_mps(double s_m) const;
 
   ScenarioConfig scenario_;
@@ -43,6 +45,8 @@ class EgoCore {
   DrivingEnvironment env_;
   Vehicle self_;
   LaneIndex index_;
+  std::size_t next_stop_ = 0;           // the scenario stop to come or under way
+  double standing_since_s_ = -1.0;      // when the current stop came to a standstill (-1: not yet)
 };
 
 }  // namespace entourage::ego

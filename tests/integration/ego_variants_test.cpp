@@ -1,0 +1,84 @@
+// The moving window around egos that do what a test person may do: stop in the lane for a minute,
+// drive at 180 km/h, keep well below the stream's speed (the shipped scenarios
+// freeway_ego_stops, freeway_ego_fast, freeway_ego_slow), each end to end with every service a
+// process over DDS. Every invariant holds (no vehicle appears or disappears in the inner region,
+// none overlaps another), and the ego really did what the scenario says.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
+
+#include "process_util.hpp"
+#include "recording/checks.hpp"
+#include "recording/recording.hpp"
+#include "recording/tables.hpp"
+#include "scenario/loader.hpp"
+
+namespace entourage::testing {
+namespace {
+
+struct Variant {
+  std::string scenario;
+  int domain;
+  // What the ego's own samples must show.
+  std::function<void(const std::vector<recording::EgoRow>&)> ego_check;
+};
+
+void PrintTo(const Variant& v, std::ostream* os) { *os << v.scenario; }
+
+void stood_for_a_minute(const std::vector<recording::EgoRow>& ego) {
+  std::size_t standing = 0;
+  for (const auto& e : ego) standing += e.speed_mps == 0.0 ? 1 : 0;
+  EXPECT_NEAR(static_cast<double>(standing) * 0.1, 60.0, 0.5);
+  EXPECT_GT(ego.back().speed_mps, 5.0) << "it drove on";
+}
+
+void mostly_near_180(const std::vector<recording::EgoRow>& ego) {
+  std::size_t fast = 0;
+  for (const auto& e : ego) fast += e.speed_mps > 170.0 / 3.6 ? 1 : 0;
+  EXPECT_GT(static_cast<double>(fast) / static_cast<double>(ego.size()), 0.3);
+}
+
+void below_the_stream(const std::vector<recording::EgoRow>& ego) {
+  double sum = 0.0;
+  for (const auto& e : ego) sum += e.speed_mps;
+  EXPECT_LT(sum / static_cast<double>(ego.size()), 85.0 / 3.6);
+}
+
+class EgoVariant : public ::testing::TestWithParam<Variant> {};
+
+TEST_P(EgoVariant, TheWindowKeepsEveryInvariant) {
+  const Variant& v = GetParam();
+  const std::string dir = fresh_dir(v.scenario);
+  const std::string scenario_path = source("scenarios/" + v.scenario + ".pbtxt");
+  const CommandResult r = run_command(bin("entourage") + " run " + scenario_path + " --lockstep --quiet --domain " +
+                                      std::to_string(v.domain) + " --record " + dir + "/r.mcap");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(no_process_uses_domain(v.domain));
+
+  const auto sc = scenario::load_file(scenario_path);
+  ASSERT_TRUE(sc.ok());
+  std::string error;
+  const auto rec = recording::read_recording(dir + "/r.mcap", &error);
+  ASSERT_TRUE(rec) << error;
+  std::vector<std::string> types;
+  for (const auto& t : sc.config.vehicle_types) types.push_back(t.name);
+  const recording::Tables t = recording::tables_from(*rec, types);
+  ASSERT_EQ(t.ego.size(), 3001U);
+  for (const auto& c : recording::check_invariants(t, sc.config.ego.length_m, sc.config.ego.width_m)) {
+    EXPECT_TRUE(c.passed) << c.name << ": " << c.detail;
+  }
+  v.ego_check(t.ego);
+  std::filesystem::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenarios, EgoVariant,
+                         ::testing::Values(Variant{"freeway_ego_stops", 140, stood_for_a_minute},
+                                           Variant{"freeway_ego_fast", 141, mostly_near_180},
+                                           Variant{"freeway_ego_slow", 142, below_the_stream}),
+                         [](const ::testing::TestParamInfo<Variant>& p) { return p.param.scenario; });
+
+}  // namespace
+}  // namespace entourage::testing
