@@ -16,7 +16,8 @@ const char* const kUsage =
     "  check SCENARIO   validate a scenario; print every problem with file, line and field\n"
     "  export RECORDING --csv DIR\n"
     "                   write DIR/vehicles.csv, ego.csv, handoffs.csv, plays.csv, run.csv, scenario.pbtxt\n"
-    "  verify RECORDING check a recording's invariants and print its figures\n"
+    "  verify RECORDING|DIR\n"
+    "                   check a recording's (or its export's) invariants and print its figures\n"
     "  models           list the behavioural models a scenario can name\n"
     "\n"
     "`entourage <command> --help` shows a command's options.\n";

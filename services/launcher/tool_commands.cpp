@@ -1,4 +1,5 @@
 // entourage check / export / verify / models: the commands that work on files, without DDS.
+#include <filesystem>
 #include <iostream>
 
 #include "behaviour/model_registry.hpp"
@@ -64,6 +65,20 @@ std::optional<Opened> open_recording(const std::string& path, const char* comman
   return Opened{recording::tables_from(*rec, type_names(*sc)), std::move(*sc)};
 }
 
+// Reads a directory written by `entourage export`, with the scenario.pbtxt in it; prints what is
+// wrong and returns nullopt.
+std::optional<Opened> open_export(const std::string& dir, const char* command) {
+  std::string error;
+  auto tables = recording::read_csv(dir, &error);
+  if (!tables) {
+    std::cerr << "entourage " << command << ": " << error << "\n";
+    return std::nullopt;
+  }
+  auto sc = recorded_scenario(tables->info.scenario_text, dir + "/" + recording::kScenarioFile);
+  if (!sc) return std::nullopt;
+  return Opened{std::move(*tables), std::move(*sc)};
+}
+
 }  // namespace
 
 int check_command(int argc, char** argv) {
@@ -91,7 +106,7 @@ int export_command(int argc, char** argv) {
   std::string dir;
   cli::Args args("entourage export",
                  "Writes a recording as CSV: vehicles.csv, ego.csv, handoffs.csv, plays.csv, with run.csv and "
-                 "scenario.pbtxt.");
+                 "scenario.pbtxt, which entourage verify DIR reads back.");
   args.positional("RECORDING", "an MCAP recording made by entourage run", &path);
   args.option("csv", "DIR", "directory to write the CSV files to; required", &dir);
   if (int rc = parse_or_exit(args, argc, argv, "export"); rc >= 0) return rc;
@@ -116,11 +131,13 @@ int verify_command(int argc, char** argv) {
   std::string path;
   cli::Args args("entourage verify",
                  "Checks a recording against the design's invariants and prints its figures; exits 1 if an "
-                 "invariant is violated.");
-  args.positional("RECORDING", "an MCAP recording made by entourage run", &path);
+                 "invariant is violated, 2 if the input cannot be read.");
+  args.positional("RECORDING", "an MCAP recording made by entourage run, or a directory written by entourage export",
+                  &path);
   if (int rc = parse_or_exit(args, argc, argv, "verify"); rc >= 0) return rc;
-  const auto opened = open_recording(path, "verify");
-  if (!opened) return 1;
+  const auto opened =
+      std::filesystem::is_directory(path) ? open_export(path, "verify") : open_recording(path, "verify");
+  if (!opened) return 2;
   return print_report({path, "", opened->scenario, 0.0, false, {}}, opened->tables, std::cout) ? 0 : 1;
 }
 
