@@ -140,16 +140,15 @@ Manoeuvres count_manoeuvres(const Tables& t, const ScenarioConfig& sc) {
   return m;
 }
 
-RunSummary summarize(const Recording& r, const Tables& t, const ScenarioConfig& sc, double spacing) {
+RunSummary summarize(const Tables& t, const ScenarioConfig& sc, double spacing) {
   RunSummary s;
   s.steps = t.ego.empty() ? 0 : t.ego.back().step;
   s.simulated_s = static_cast<double>(s.steps) * sc.step_s;
-  for (const auto& h : r.handoffs) {
-    const Role from = ServiceId::from_code(h.from_service()).role;
-    if (from == Role::kGenerator) {
+  for (const auto& h : t.handoffs) {
+    if (role_of_service(h.from) == Role::kGenerator) {
       ++s.generated;
-      if (h.reason() == static_cast<std::uint8_t>(HandoffReason::kInitialFill)) ++s.initial_fill;
-    } else if (static_cast<Role>(h.to_role()) == Role::kNone) {
+      if (h.reason == to_string(HandoffReason::kInitialFill)) ++s.initial_fill;
+    } else if (h.to_role == "none") {
       ++s.removed;
     } else {
       ++s.transfers;

@@ -83,7 +83,7 @@ struct RunSummary {
   double ego_distance_m = 0.0;
 };
 
-RunSummary summarize(const Recording& r, const Tables& t, const ScenarioConfig& sc, double detector_spacing_m = 25.0);
+RunSummary summarize(const Tables& t, const ScenarioConfig& sc, double detector_spacing_m = 25.0);
 
 // FlowMeasurement for one direction from rows alone (also used by tests on exported CSV).
 FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int direction, double detector_spacing_m);

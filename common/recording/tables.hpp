@@ -1,12 +1,13 @@
 #pragma once
-// A recording as plain rows, the shape of the CSV export (`entourage export`), so that every
-// analysis and check runs the same on a recording and on its exported CSV files.
+// A recording as plain rows, the shape of the CSV export (`entourage export`, csv_tables.hpp), so
+// that every analysis and check runs the same on a recording and on its exported CSV files.
 
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "core/ids.hpp"
 #include "recording/recording.hpp"
 
 namespace entourage::recording {
@@ -47,20 +48,48 @@ struct EgoRow {
   double width_m = 1.8;
 };
 
+// An ownership change; names as in VehicleRow.
+struct HandoffRow {
+  std::uint64_t step = 0;
+  double time_s = 0.0;
+  std::uint32_t vehicle_id = 0;
+  std::uint32_t sequence = 0;
+  std::string from;       // service name
+  std::string to_role;    // none (retired), micro, meso, director, other
+  std::string to_region;  // outer_rear, inner, outer_front, outside
+  std::string reason;     // birth, initial_fill, border, left_window, director, unknown
+  int lane = 0;
+  double s_m = 0.0;
+  double speed_mps = 0.0;
+};
+
+// A play's status report from the director.
+struct PlayRow {
+  std::uint64_t step = 0;
+  double time_s = 0.0;
+  std::uint32_t play_id = 0;
+  std::string name;
+  std::uint32_t phase = 0;
+  double ego_s_m = 0.0;
+  double estimated_start_time_s = 0.0;
+  std::string detail;
+};
+
 struct Tables {
+  RecordingInfo info;               // the run's settings and scenario text
+  std::uint64_t undecodable = 0;    // recorded messages that did not decode
   std::vector<VehicleRow> vehicles;  // sorted by step, then id
   std::vector<EgoRow> ego;           // sorted by step
+  std::vector<HandoffRow> handoffs;  // as recorded
+  std::vector<PlayRow> plays;        // as recorded
 };
 
 // `type_names[i]` names vehicle type i (from the recorded scenario).
 Tables tables_from(const Recording& r, const std::vector<std::string>& type_names);
-
-// Writes DIR/vehicles.csv, DIR/ego.csv, DIR/handoffs.csv and DIR/plays.csv (creating DIR).
-bool write_csv(const Recording& r, const Tables& t, const std::string& dir, std::string* error);
-// Reads DIR/vehicles.csv and DIR/ego.csv back.
-std::optional<Tables> read_csv(const std::string& dir, std::string* error);
-
-extern const char* const kVehiclesHeader;
-extern const char* const kEgoHeader;
+// Sorts vehicles by step, then id, and the ego by step (stable: equal keys keep their order).
+void sort_rows(Tables& t);
+// The role of a service named as in VehicleRow::owner and HandoffRow::from (to_string(ServiceId));
+// nullopt if no service has that name.
+std::optional<Role> role_of_service(const std::string& name);
 
 }  // namespace entourage::recording

@@ -15,8 +15,9 @@ const char* const kUsage =
     "                   start every service as a process, run the scenario, print a summary\n"
     "  check SCENARIO   validate a scenario; print every problem with file, line and field\n"
     "  export RECORDING --csv DIR\n"
-    "                   write DIR/vehicles.csv, ego.csv, handoffs.csv and plays.csv\n"
-    "  verify RECORDING check a recording's invariants and print its figures\n"
+    "                   write DIR/vehicles.csv, ego.csv, handoffs.csv, plays.csv, run.csv, scenario.pbtxt\n"
+    "  verify RECORDING|DIR\n"
+    "                   check a recording's (or its export's) invariants and print its figures\n"
     "  models           list the behavioural models a scenario can name\n"
     "\n"
     "`entourage <command> --help` shows a command's options.\n";

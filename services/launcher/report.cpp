@@ -56,12 +56,11 @@ bool print_report(const ReportInput& in, std::ostream& out) {
     out << "entourage: cannot read the recording: " << error << "\n";
     return false;
   }
-  return print_report(in, *rec, out);
+  return print_report(in, recording::tables_from(*rec, type_names(in.scenario)), out);
 }
 
-bool print_report(const ReportInput& in, const recording::Recording& rec, std::ostream& out) {
-  const auto tables = recording::tables_from(rec, type_names(in.scenario));
-  const auto s = recording::summarize(rec, tables, in.scenario);
+bool print_report(const ReportInput& in, const recording::Tables& tables, std::ostream& out) {
+  const auto s = recording::summarize(tables, in.scenario);
   out << "summary:\n";
   out << "  simulated " << f1(s.simulated_s) << " s (" << s.steps << " steps)";
   if (in.wall_s > 0.0) {
@@ -107,9 +106,9 @@ bool print_report(const ReportInput& in, const recording::Recording& rec, std::o
     out << "    " << (c.passed ? "ok     " : "FAILED ") << c.name << ": " << c.detail << "\n";
     all_ok = all_ok && c.passed;
   }
-  if (rec.undecodable > 0) out << "  " << rec.undecodable << " recorded messages could not be decoded\n";
-  out << "  recording: " << in.recording << " (" << rec.vehicles.size() + rec.egos.size() + rec.handoffs.size()
-      << " samples)\n";
+  if (tables.undecodable > 0) out << "  " << tables.undecodable << " recorded messages could not be decoded\n";
+  out << "  recording: " << in.recording << " ("
+      << tables.vehicles.size() + tables.ego.size() + tables.handoffs.size() << " samples)\n";
   if (!in.logs_dir.empty()) out << "  logs: " << in.logs_dir << "/\n";
   return all_ok;
 }

@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "recording/recording.hpp"
+#include "recording/tables.hpp"
 #include "scenario/config.hpp"
 
 namespace entourage::launcher {
 
 struct ReportInput {
-  std::string recording;
+  std::string recording;  // the recording's path (or the CSV directory it was exported to)
   std::string logs_dir;  // empty: not a run
   ScenarioConfig scenario;
   double wall_s = 0.0;  // 0: not a run
@@ -21,8 +21,9 @@ struct ReportInput {
   std::vector<double> latencies_ms;
 };
 
-// Prints the report of a recording; false if an invariant is violated.
-bool print_report(const ReportInput& in, const recording::Recording& rec, std::ostream& out);
+// Prints the report of a recording's rows (from the recording or its CSV export); false if an
+// invariant is violated.
+bool print_report(const ReportInput& in, const recording::Tables& tables, std::ostream& out);
 // Reads in.recording and prints its report; false if it cannot be read or an invariant is violated.
 bool print_report(const ReportInput& in, std::ostream& out);
 

@@ -1,4 +1,5 @@
 // entourage check / export / verify / models: the commands that work on files, without DDS.
+#include <filesystem>
 #include <iostream>
 
 #include "behaviour/model_registry.hpp"
@@ -6,6 +7,7 @@
 #include "core/units.hpp"
 #include "launcher/commands.hpp"
 #include "launcher/report.hpp"
+#include "recording/csv_tables.hpp"
 #include "recording/recording.hpp"
 #include "recording/tables.hpp"
 #include "scenario/loader.hpp"
@@ -27,9 +29,10 @@ int parse_or_exit(cli::Args& args, int argc, char** argv, const char* command) {
   return -1;
 }
 
-// The scenario a recording was made with (its attached text), for type names and the window.
-std::optional<ScenarioConfig> recorded_scenario(const recording::Recording& r, const std::string& path) {
-  auto sc = scenario::load_text(r.info.scenario_text, path + " (attached " + r.info.scenario_file + ")");
+// The scenario a recording was made with (its attached text), for type names and the window;
+// `source` names the text in problems.
+std::optional<ScenarioConfig> recorded_scenario(const std::string& text, const std::string& source) {
+  auto sc = scenario::load_text(text, source);
   if (!sc.ok()) {
     for (const auto& p : sc.problems) std::cerr << p.to_string() << "\n";
     return std::nullopt;
@@ -44,21 +47,36 @@ std::vector<std::string> type_names(const ScenarioConfig& sc) {
 }
 
 struct Opened {
-  recording::Recording recording;
+  recording::Tables tables;
   ScenarioConfig scenario;
 };
 
-// Reads a recording and the scenario it was made with; prints what is wrong and returns nullopt.
+// Reads an MCAP recording as rows, with the scenario attached to it; prints what is wrong and
+// returns nullopt.
 std::optional<Opened> open_recording(const std::string& path, const char* command) {
   std::string error;
-  auto rec = recording::read_recording(path, &error);
+  const auto rec = recording::read_recording(path, &error);
   if (!rec) {
     std::cerr << "entourage " << command << ": " << error << "\n";
     return std::nullopt;
   }
-  auto sc = recorded_scenario(*rec, path);
+  auto sc = recorded_scenario(rec->info.scenario_text, path + " (attached " + rec->info.scenario_file + ")");
   if (!sc) return std::nullopt;
-  return Opened{std::move(*rec), std::move(*sc)};
+  return Opened{recording::tables_from(*rec, type_names(*sc)), std::move(*sc)};
+}
+
+// Reads a directory written by `entourage export`, with the scenario.pbtxt in it; prints what is
+// wrong and returns nullopt.
+std::optional<Opened> open_export(const std::string& dir, const char* command) {
+  std::string error;
+  auto tables = recording::read_csv(dir, &error);
+  if (!tables) {
+    std::cerr << "entourage " << command << ": " << error << "\n";
+    return std::nullopt;
+  }
+  auto sc = recorded_scenario(tables->info.scenario_text, dir + "/" + recording::kScenarioFile);
+  if (!sc) return std::nullopt;
+  return Opened{std::move(*tables), std::move(*sc)};
 }
 
 }  // namespace
@@ -86,7 +104,9 @@ int check_command(int argc, char** argv) {
 int export_command(int argc, char** argv) {
   std::string path;
   std::string dir;
-  cli::Args args("entourage export", "Writes a recording as CSV: vehicles.csv, ego.csv, handoffs.csv, plays.csv.");
+  cli::Args args("entourage export",
+                 "Writes a recording as CSV: vehicles.csv, ego.csv, handoffs.csv, plays.csv, with run.csv and "
+                 "scenario.pbtxt, which entourage verify DIR reads back.");
   args.positional("RECORDING", "an MCAP recording made by entourage run", &path);
   args.option("csv", "DIR", "directory to write the CSV files to; required", &dir);
   if (int rc = parse_or_exit(args, argc, argv, "export"); rc >= 0) return rc;
@@ -96,15 +116,14 @@ int export_command(int argc, char** argv) {
   }
   const auto opened = open_recording(path, "export");
   if (!opened) return 1;
-  const recording::Recording& rec = opened->recording;
-  const auto tables = recording::tables_from(rec, type_names(opened->scenario));
+  const recording::Tables& tables = opened->tables;
   std::string error;
-  if (!recording::write_csv(rec, tables, dir, &error)) {
+  if (!recording::write_csv(tables, dir, &error)) {
     std::cerr << "entourage export: " << error << "\n";
     return 1;
   }
   std::cout << "wrote " << tables.vehicles.size() << " vehicle rows, " << tables.ego.size() << " ego rows, "
-            << rec.handoffs.size() << " handoffs and " << rec.plays.size() << " play reports to " << dir << "/\n";
+            << tables.handoffs.size() << " handoffs and " << tables.plays.size() << " play reports to " << dir << "/\n";
   return 0;
 }
 
@@ -112,12 +131,14 @@ int verify_command(int argc, char** argv) {
   std::string path;
   cli::Args args("entourage verify",
                  "Checks a recording against the design's invariants and prints its figures; exits 1 if an "
-                 "invariant is violated.");
-  args.positional("RECORDING", "an MCAP recording made by entourage run", &path);
+                 "invariant is violated, 2 if the input cannot be read.");
+  args.positional("RECORDING", "an MCAP recording made by entourage run, or a directory written by entourage export",
+                  &path);
   if (int rc = parse_or_exit(args, argc, argv, "verify"); rc >= 0) return rc;
-  const auto opened = open_recording(path, "verify");
-  if (!opened) return 1;
-  return print_report({path, "", opened->scenario, 0.0, false, {}}, opened->recording, std::cout) ? 0 : 1;
+  const auto opened =
+      std::filesystem::is_directory(path) ? open_export(path, "verify") : open_recording(path, "verify");
+  if (!opened) return 2;
+  return print_report({path, "", opened->scenario, 0.0, false, {}}, opened->tables, std::cout) ? 0 : 1;
 }
 
 int models_command(int argc, char** argv) {

@@ -6,7 +6,7 @@
 
 #include "process_util.hpp"
 #include "recording/checks.hpp"
-#include "recording/tables.hpp"
+#include "recording/csv_tables.hpp"
 
 namespace entourage::testing {
 namespace {

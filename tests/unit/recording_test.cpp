@@ -9,6 +9,7 @@
 
 #include "core_test_util.hpp"
 #include "recording/checks.hpp"
+#include "recording/csv_tables.hpp"
 #include "recording/summary.hpp"
 #include "recording/recording.hpp"
 #include "recording/tables.hpp"
@@ -117,11 +118,13 @@ TEST(Recording, CsvExportRoundTrips) {
   ASSERT_TRUE(r) << error;
   const Tables t = tables_from(*r, {"car"});
   const std::string dir = temp_path("csv");
-  ASSERT_TRUE(write_csv(*r, t, dir, &error)) << error;
+  ASSERT_TRUE(write_csv(t, dir, &error)) << error;
   std::ifstream v(dir + "/vehicles.csv");
   std::string header;
   std::getline(v, header);
-  EXPECT_EQ(header, "step,time_s,id,owner,region,direction,lane,s_m,d_m,x_m,y_m,heading_rad,speed_mps,accel_mps2,length_m,width_m,type");
+  EXPECT_EQ(header,
+            "step,time_s,id,owner,region,direction,lane,s_m,d_m,x_m,y_m,heading_rad,speed_mps,accel_mps2,length_m,width_m,"
+            "type,target_lane");
   const auto back = read_csv(dir, &error);
   ASSERT_TRUE(back) << error;
   ASSERT_EQ(back->vehicles.size(), 6U);
