@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "core/units.hpp"
 #include "road/window.hpp"
 #include "traffic/handoff.hpp"
+#include "traffic/headways.hpp"
 #include "traffic/observed_stream.hpp"
 
 namespace entourage::recording {
@@ -16,9 +19,22 @@ double FlowMeasurement::relative_error() const {
   return demand_veh_per_h > 0.0 ? (measured_veh_per_h - demand_veh_per_h) / demand_veh_per_h : 0.0;
 }
 
+double FlowMeasurement::share_below() const {
+  return headways > 0 ? static_cast<double>(headways_below) / static_cast<double>(headways) : 0.0;
+}
+
+double FlowMeasurement::platoon_size(double share_below) {
+  return share_below < 1.0 ? 1.0 / (1.0 - share_below) : std::numeric_limits<double>::infinity();
+}
+
 FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int direction, double spacing) {
   FlowMeasurement f;
-  f.demand_veh_per_h = per_second_to_per_hour(sc.flow(direction > 0 ? Direction::kForward : Direction::kBackward).flow_veh_per_s);
+  const FlowConfig& demand = sc.flow(direction > 0 ? Direction::kForward : Direction::kBackward);
+  f.demand_veh_per_h = per_second_to_per_hour(demand.flow_veh_per_s);
+  f.source_share_below = CompositeHeadways{demand.free_share, demand.min_headway_s}.share_below(
+      demand.flow_veh_per_s, kPlatoonHeadway_s);
+  const int own_lanes = direction > 0 ? sc.road.lanes_forward : sc.road.lanes_backward;
+  std::map<std::pair<std::int64_t, int>, std::uint64_t> last_crossing;  // (detector, lane) -> step
   std::unordered_map<std::uint64_t, const EgoRow*> ego_at;
   for (const auto& e : t.ego) ego_at[e.step] = &e;
   std::unordered_map<std::uint32_t, double> last_s;
@@ -53,6 +69,16 @@ FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int dire
           if (to >= from) {
             f.crossings += static_cast<std::uint64_t>(to - from + 1.0);
             counted.insert(r.id);
+            if (r.lane < own_lanes) {
+              for (double x = from; x <= to; x += 1.0) {
+                auto [at, fresh] = last_crossing.try_emplace({static_cast<std::int64_t>(x), r.lane}, step);
+                if (!fresh) {
+                  ++f.headways;
+                  if (static_cast<double>(step - at->second) * sc.step_s < kPlatoonHeadway_s) ++f.headways_below;
+                  at->second = step;
+                }
+              }
+            }
           }
         }
       }

@@ -26,9 +26,22 @@ struct FlowMeasurement {
   std::uint64_t crossings = 0;
   double observed_s = 0.0;     // detector-seconds
   std::uint64_t vehicles = 0;  // distinct vehicles counted
+  // Platoons at the same detectors: headways between consecutive vehicles in a lane (both
+  // crossings seen while the detector was in the window), how many were below
+  // kPlatoonHeadway_s (the follower belongs to the leader's platoon), and the share the scenario's
+  // arrival headways give at the source (traffic/headways.hpp; Poisson without headways).
+  std::uint64_t headways = 0;
+  std::uint64_t headways_below = 0;
+  double source_share_below = 0.0;
 
   double relative_error() const;  // (measured - demand) / demand; 0 if no demand
+  double share_below() const;     // headways_below / headways; 0 without headways
+  // Mean platoon size (leader included) from a share of following vehicles: 1 / (1 - share).
+  static double platoon_size(double share_below);
 };
+
+// A vehicle less than this behind the one ahead in its lane drives in its platoon.
+inline constexpr double kPlatoonHeadway_s = 3.0;
 
 // Flow past the ego, the moving-observer way (Wardrop 1952): vehicles of its direction that pass
 // it and that it passes, oncoming vehicles it meets, and the density around it give

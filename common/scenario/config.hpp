@@ -120,6 +120,9 @@ struct VehicleTypeConfig {
 
 struct FlowConfig {
   double flow_veh_per_s = 0.0;
+  // Cowan M3 headways of the arrivals (1 and 0: Poisson); see traffic/headways.hpp.
+  double free_share = 1.0;
+  double min_headway_s = 0.0;
   std::vector<double> type_shares;  // per vehicle type index, normalised to sum 1 (all 0 if no flow)
 };
 

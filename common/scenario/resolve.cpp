@@ -111,6 +111,10 @@ OvertakingParams resolve_overtaking(const Overtaking& o) {
 FlowConfig resolve_flow(const Flow& f, const Scenario& s) {
   FlowConfig out;
   out.flow_veh_per_s = per_hour_to_per_second(f.flow_veh_per_h());
+  if (f.has_headways()) {
+    out.free_share = f.headways().free_share();
+    out.min_headway_s = f.headways().min_headway_s();
+  }
   out.type_shares.assign(static_cast<std::size_t>(s.vehicle_type_size()), 0.0);
   double total = 0.0;
   for (const auto& sh : f.mix()) {

@@ -130,6 +130,15 @@ void check_flow(const Cursor& c, const Flow& f, const std::set<std::string>& typ
     total += sh.share();
   }
   if (f.flow_veh_per_h() > 0.0 && !(total > 0.0)) c.fail("mix", "a positive flow needs a mix with a positive share");
+  if (f.has_headways()) {
+    const Headways& h = f.headways();
+    const Cursor hc = c.child(h, "headways");
+    hc.range("free_share", h.free_share(), 0.0, 1.0, true);
+    hc.range("min_headway_s", h.min_headway_s(), 0.0, 10.0);
+    if (h.min_headway_s() * f.flow_veh_per_h() / 3600.0 >= 1.0) {
+      hc.fail("min_headway_s", "min_headway_s times the flow must stay below 1 (the mean headway is 1/flow)");
+    }
+  }
 }
 
 void check_demand(const Cursor& top, const Scenario& s, const std::set<std::string>& types) {

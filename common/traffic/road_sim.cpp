@@ -48,7 +48,12 @@ RoadSim::RoadSim(const ScenarioConfig& scenario, RoadSimConfig config, std::uint
     Source& src = source(d);
     src.active = (d == Direction::kForward ? config_.forward : config_.backward) && scenario_.road.lanes(d) > 0;
     src.stream = std::make_unique<StreamModel>(make_stream(scenario_, d));
-    if (src.active) src.next_arrival = rng_.exponential(1.0);
+    const FlowConfig& flow = d == Direction::kForward ? scenario_.forward : scenario_.backward;
+    src.headways = CompositeHeadways{flow.free_share, flow.min_headway_s};
+    if (src.active) {
+      src.next_arrival = src.headways.poisson() ? rng_.exponential(1.0)
+                                                : draw_headway_s(src.headways, src.stream->flow_veh_per_s(), rng_);
+    }
   }
 }
 
@@ -71,6 +76,15 @@ void RoadSim::step() {
 void RoadSim::arrive() {
   for (Source& src : sources_) {
     if (!src.active) continue;
+    if (!src.headways.poisson()) {  // composite headways: count down the drawn headway
+      src.accumulated += scenario_.step_s;
+      while (src.accumulated >= src.next_arrival) {
+        src.accumulated -= src.next_arrival;
+        src.next_arrival = draw_headway_s(src.headways, src.stream->flow_veh_per_s(), rng_);
+        src.queue.push_back(src.stream->draw_time_mean(rng_));
+      }
+      continue;
+    }
     src.accumulated += src.stream->flow_veh_per_s() * scenario_.step_s;
     while (src.accumulated >= src.next_arrival) {
       src.accumulated -= src.next_arrival;

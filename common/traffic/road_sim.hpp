@@ -13,6 +13,8 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+
+#include "traffic/headways.hpp"
 #include <limits>
 #include <memory>
 #include <vector>
@@ -93,7 +95,8 @@ class RoadSim {
     bool active = false;
     std::unique_ptr<StreamModel> stream;
     std::deque<SpeedDraw> queue;
-    double accumulated = 0.0;
+    CompositeHeadways headways;  // Poisson: arrivals by integrated rate; else by drawn headways
+    double accumulated = 0.0;    // integrated rate (Poisson) or time (composite) since the last arrival
     double next_arrival = 1.0;
   };
   Source& source(Direction d) { return sources_[dir_index(d)]; }

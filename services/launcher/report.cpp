@@ -89,6 +89,15 @@ bool print_report(const ReportInput& in, const recording::Tables& tables, std::o
       << " (" << ratio(pe.overtaking, pp.overtaking) << "), active " << pe.overtaken << " / " << f1(pp.overtaken)
       << " (" << ratio(pe.overtaken, pp.overtaken) << "), oncoming met " << pe.met << " / " << f1(pp.met) << " ("
       << ratio(pe.met, pp.met) << ")\n";
+  for (const auto& [name, f] : {std::pair<const char*, const recording::FlowMeasurement&>{"forward", s.forward},
+                                {"backward", s.backward}}) {
+    if (f.headways == 0) continue;
+    out << "  platoons " << name << ": " << f1(100.0 * f.share_below()) << " % of " << f.headways
+        << " headways below " << f1(recording::kPlatoonHeadway_s) << " s (mean platoon "
+        << f2(recording::FlowMeasurement::platoon_size(f.share_below())) << " vehicles); the scenario's arrivals at the source: "
+        << f1(100.0 * f.source_share_below) << " % ("
+        << f2(recording::FlowMeasurement::platoon_size(f.source_share_below)) << ")\n";
+  }
   out << "  lane changes: " << s.manoeuvres.lane_changes;
   if (in.scenario.road.kind == RoadKind::kRural) {
     out << "; overtakings in the oncoming lane: " << s.manoeuvres.overtakings << " (by " << s.manoeuvres.overtakers
