@@ -246,7 +246,8 @@ CostLine cost_line(const Figures& a, const Figures& b, std::size_t c) {
   return l;
 }
 
-void print_comparison(const Figures& micro_only, const Figures& split) {
+// The table of both configurations and the saving.
+void print_table(const Figures& micro_only, const Figures& split) {
   std::printf("  %-22s %s   %s\n", "", "--------- CPU per step, us ---------", "--- vehicles per step ----");
   std::printf("  %-22s %8s %8s %9s %8s   %7s %7s %10s\n", "configuration", "micro", "meso", "generator", "total",
               "micro", "meso", "front zone");
@@ -256,6 +257,10 @@ void print_comparison(const Figures& micro_only, const Figures& split) {
   const double b = split.total_us_per_step();
   std::printf("  saving: %.1f %% of the CPU per step (all-micro %.1f us, split %.1f us: %.2f times)\n",
               100.0 * (a - b) / a, a, b, a / b);
+}
+
+// Meso against micro per vehicle-step, and as fixed + marginal costs.
+void print_vehicle_costs(const Figures& micro_only, const Figures& split) {
   const double micro_cost = split.us_per_vehicle_step(kMicroCore);
   const double meso_cost = split.us_per_vehicle_step(kMesoCore);
   std::printf("  per vehicle-step: micro %.3f us (all-micro %.3f us), meso %.3f us: meso %.1f times cheaper "
@@ -268,6 +273,10 @@ void print_comparison(const Figures& micro_only, const Figures& split) {
               "meso %.2f us + %.3f us: marginally meso %.1f times cheaper\n",
               micro_line.fixed_us, micro_line.marginal_us, meso_line.fixed_us, meso_line.marginal_us,
               meso_line.marginal_us > 0.0 ? micro_line.marginal_us / meso_line.marginal_us : 0.0);
+}
+
+// The live run's own timings, the fingerprints, and whether the runs were cut short.
+void print_live_and_checks(const Figures& micro_only, const Figures& split) {
   std::printf("  live run, cores interleaved and timed step by step (us per step, all-micro / split): micro %.1f / "
               "%.1f, meso %.1f / %.1f, generator %.1f / %.1f\n",
               micro_only.live_us_per_step(kMicroCore), split.live_us_per_step(kMicroCore),
@@ -326,7 +335,9 @@ bool bench_scenario(const std::string& path, const ScenarioConfig& sc, std::uint
     std::cerr << "entourage-bench-meso: a replay did not compute what the live run did\n";
     return false;
   }
-  print_comparison(configurations[0].figures, configurations[1].figures);
+  print_table(configurations[0].figures, configurations[1].figures);
+  print_vehicle_costs(configurations[0].figures, configurations[1].figures);
+  print_live_and_checks(configurations[0].figures, configurations[1].figures);
   std::fflush(stdout);
   return true;
 }
