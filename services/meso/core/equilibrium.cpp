@@ -22,21 +22,30 @@ double equilibrium_by_bisection(const CarFollowingParams& p, double gap_m) {
 }
 }  // namespace
 
-EquilibriumSpeed::EquilibriumSpeed(const CarFollowingParams& p) : desired_mps_(p.idm.desired_speed_mps) {
+EquilibriumSpeed::EquilibriumSpeed(const CarFollowingParams& p)
+    : params_(p), desired_mps_(p.idm.desired_speed_mps), known_(0) {
   max_gap_m_ = kTableReachInSafeGaps * (p.idm.min_gap_m + p.idm.desired_speed_mps * p.idm.time_gap_s);
-  for (int i = 0; i < kPoints; ++i) {
+}
+
+double EquilibriumSpeed::point(std::size_t i) const {
+  const std::uint64_t bit = std::uint64_t{1} << i;
+  if ((known_ & bit) == 0) {
     const double x = static_cast<double>(i) / (kPoints - 1);
-    speed_mps_[static_cast<std::size_t>(i)] = equilibrium_by_bisection(p, max_gap_m_ * x * x);
+    speed_mps_[i] = equilibrium_by_bisection(params_, max_gap_m_ * x * x);
+    known_ |= bit;
   }
+  return speed_mps_[i];
 }
 
 double EquilibriumSpeed::at(double gap_m) const {
   if (gap_m >= max_gap_m_) return desired_mps_;
-  if (gap_m <= 0.0) return speed_mps_[0];
+  if (gap_m <= 0.0) return point(0);
   const double pos = std::sqrt(gap_m / max_gap_m_) * (kPoints - 1);
   const auto i = static_cast<std::size_t>(pos);
+  if (i + 1 >= kPoints) return point(kPoints - 1);  // a gap a rounding error short of max_gap_m_
   const double f = pos - static_cast<double>(i);
-  return speed_mps_[i] + f * (speed_mps_[i + 1] - speed_mps_[i]);
+  const double lo = point(i);
+  return lo + f * (point(i + 1) - lo);
 }
 
 }  // namespace entourage::meso

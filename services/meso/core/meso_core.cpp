@@ -123,6 +123,7 @@ StepOutput MesoCore::hand_off(const StepInput& in) {
   const WindowBounds w = WindowBounds::around(in.ego.s_m, scenario_.window);
   const double margin = scenario_.window.handoff_hysteresis_m;
   StepOutput out;
+  out.states.reserve(fleet_.size());
   // Vehicles of the ego's direction leaving ahead go on in the generator's front zone (they are the
   // traffic ahead of the window); all others leaving the window retire.
   auto ahead = fleet_.extract_if(
@@ -145,6 +146,11 @@ StepOutput MesoCore::hand_off(const StepInput& in) {
     ++counters_.retired;
   }
   for (const Vehicle& v : fleet_.vehicles()) out.states.push_back({v, w.region_of(v.s_m)});
+  // Both runs (those leaving ahead, then the rest of the fleet) are in id order already: merged,
+  // not sorted (a sort moved these large records around at every step).
+  const auto by_id = [](const VehicleReport& a, const VehicleReport& b) { return a.vehicle.id < b.vehicle.id; };
+  std::inplace_merge(out.states.begin(), out.states.begin() + static_cast<std::ptrdiff_t>(ahead.size()),
+                     out.states.end(), by_id);
   auto leaving = fleet_.extract_if([&](const Vehicle& v) {
     const Region r = w.region_of(v.s_m);
     return r == Region::kInner || (r != Region::kOutside && !serves(r));
@@ -160,8 +166,6 @@ StepOutput MesoCore::hand_off(const StepInput& in) {
   }
   std::sort(out.handoffs.begin(), out.handoffs.end(),
             [](const Handoff& a, const Handoff& b) { return a.vehicle.id < b.vehicle.id; });
-  std::sort(out.states.begin(), out.states.end(),
-            [](const VehicleReport& a, const VehicleReport& b) { return a.vehicle.id < b.vehicle.id; });
   return out;
 }
 

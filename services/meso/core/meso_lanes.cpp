@@ -40,12 +40,13 @@ std::optional<int> choose_lane(const Vehicle& v, const LaneIndex& index, double 
   const int lanes = index.lanes(v.direction);
   const double v_gap = gap_ahead_m < 0.0 ? p.desired_speed_mps : (gap_ahead_m - p.min_gap_m) / p.time_gap_s;
   const bool blocked = v_gap < p.desired_speed_mps - rules.blocked_speed_loss_mps;
-  const Occupant* leader_now = index.leader(v.direction, v.lane, v.progress_m(), v.id);
   const Occupant* leader_there = nullptr;
-  if (blocked && !v.driver.keep_right && v.lane + 1 < lanes &&
-      has_room(v, index, v.lane + 1, 1.0, &leader_there) &&
-      (leader_there == nullptr || leader_now == nullptr || leader_there->speed_mps > leader_now->speed_mps)) {
-    return v.lane + 1;
+  if (blocked && !v.driver.keep_right && v.lane + 1 < lanes && has_room(v, index, v.lane + 1, 1.0, &leader_there)) {
+    // Looked up only here: most vehicles are not blocked, and this runs at every step.
+    const Occupant* leader_now = index.leader(v.direction, v.lane, v.progress_m(), v.id);
+    if (leader_there == nullptr || leader_now == nullptr || leader_there->speed_mps > leader_now->speed_mps) {
+      return v.lane + 1;
+    }
   }
   if (v.lane > 0 && has_room(v, index, v.lane - 1, rules.keep_right_gap_factor, &leader_there) &&
       (leader_there == nullptr || leader_there->speed_mps >= p.desired_speed_mps - rules.blocked_speed_loss_mps)) {
