@@ -1,7 +1,9 @@
 // Scenario loading: defaults, unit conversions, and every problem named with file, line and field.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "scenario/loader.hpp"
 
@@ -24,8 +26,13 @@ std::string all(const Loaded& l) {
 }
 
 TEST(Scenario, ShippedScenariosAreValid) {
-  for (const char* f : {"/scenarios/freeway.pbtxt", "/tests/scenarios/minimal.pbtxt"}) {
-    const Loaded l = load_file(std::string(ENTOURAGE_SOURCE_DIR) + f);
+  std::vector<std::string> files{std::string(ENTOURAGE_SOURCE_DIR) + "/tests/scenarios/minimal.pbtxt"};
+  for (const auto& e : std::filesystem::directory_iterator(std::string(ENTOURAGE_SOURCE_DIR) + "/scenarios")) {
+    if (e.path().extension() == ".pbtxt") files.push_back(e.path().string());
+  }
+  EXPECT_GE(files.size(), 6U);
+  for (const auto& f : files) {
+    const Loaded l = load_file(f);
     EXPECT_TRUE(l.ok()) << f << "\n" << all(l);
   }
 }
