@@ -2,11 +2,31 @@
 
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/domain/qos/DomainParticipantQos.hpp>
+#include <fastdds/rtps/transport/test_UDPv4TransportDescriptor.h>
+
+#include <cstdlib>
+#include <memory>
 
 namespace entourage::dds {
 
 namespace {
 constexpr const char* kParticipantProfile = "entourage_participant";
+constexpr const char* kDropEnv = "ENTOURAGE_FAULT_DROP_PERCENT";
+
+// Fault injection: ENTOURAGE_FAULT_DROP_PERCENT=N (1-100) makes this process's participant send
+// over UDP only, dropping N % of its outgoing data messages (RTPS DATA and DATA_FRAG; discovery
+// is not dropped), and turns data sharing off, so that reliability has to repair every loss.
+// 0 or unset: the normal transports.
+int drop_percent() {
+  const char* v = std::getenv(kDropEnv);
+  if (v == nullptr || *v == '\0') return 0;
+  char* end = nullptr;
+  const long n = std::strtol(v, &end, 10);
+  if (*end != '\0' || n < 0 || n > 100) {
+    throw DdsError(std::string(kDropEnv) + " must be a whole number from 0 to 100 (got \"" + v + "\")");
+  }
+  return static_cast<int>(n);
+}
 
 std::string profile_of(Topic t, const char* side) { return std::string(info(t).profile) + "_" + side; }
 }  // namespace
@@ -21,6 +41,13 @@ Node::Node(int domain, const std::string& qos_file, const std::string& participa
     throw DdsError(std::string("the QoS file ") + qos_file + " has no participant profile " + kParticipantProfile);
   }
   qos.name(participant_name);
+  drop_percent_ = drop_percent();
+  if (drop_percent_ > 0) {
+    auto lossy = std::make_shared<eprosima::fastdds::rtps::test_UDPv4TransportDescriptor>();
+    lossy->dropDataMessagesPercentage = static_cast<std::uint8_t>(drop_percent_);
+    qos.transport().user_transports.push_back(lossy);
+    qos.transport().use_builtin_transports = false;
+  }
   participant_ = factory->create_participant(static_cast<fdds::DomainId_t>(domain), qos);
   if (participant_ == nullptr) throw DdsError("cannot join DDS domain " + std::to_string(domain));
   publisher_ = participant_->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
@@ -48,6 +75,7 @@ fdds::DataWriter* Node::create_writer(Topic t, fdds::Topic* topic) {
   }
   // Not settable from XML in Fast DDS 2.9: a vehicle handed to another owner must not be disposed.
   qos.writer_data_lifecycle().autodispose_unregistered_instances = false;
+  if (drop_percent_ > 0) qos.data_sharing().off();
   fdds::DataWriter* w = publisher_->create_datawriter(topic, qos);
   if (w == nullptr) throw DdsError("cannot create a writer for " + std::string(info(t).name));
   writers_[t] = w;
@@ -59,6 +87,7 @@ void Node::create_reader(Topic t, fdds::Topic* topic, fdds::DataReaderListener* 
   if (subscriber_->get_datareader_qos_from_profile(profile_of(t, "reader"), qos) != ReturnCode_t::RETCODE_OK) {
     throw DdsError("no QoS profile " + profile_of(t, "reader"));
   }
+  if (drop_percent_ > 0) qos.data_sharing().off();
   fdds::DataReader* r = subscriber_->create_datareader(topic, qos, listener, fdds::StatusMask::data_available());
   if (r == nullptr) throw DdsError("cannot create a reader for " + std::string(info(t).name));
   readers_[t] = r;

@@ -105,6 +105,7 @@ class Node {
   fdds::DataWriter* create_writer(Topic t, fdds::Topic* topic);
   void create_reader(Topic t, fdds::Topic* topic, fdds::DataReaderListener* listener);
 
+  int drop_percent_ = 0;  // fault injection (ENTOURAGE_FAULT_DROP_PERCENT), see node.cpp
   fdds::DomainParticipant* participant_ = nullptr;
   fdds::Publisher* publisher_ = nullptr;
   fdds::Subscriber* subscriber_ = nullptr;

@@ -3,6 +3,8 @@
 // The core is anything with `StepOutput step(const StepInput&)`, `fleet()` and `counters()`.
 
 #include <algorithm>
+#include <deque>
+#include <utility>
 #include <vector>
 
 #include "entourage_msg/EgoStatePubSubTypes.h"
@@ -54,6 +56,13 @@ class RegionPublisher {
   TopicCounts publish(Step k, double time_s, const StepOutput& out) {
     TopicCounts written{};
     own_.clear();
+    // Instances of vehicles handed on are released two steps later: step k begins once every peer
+    // has finished step k-1, for which it needed every state of step k-2, so a lost last state has
+    // been repaired by then (releasing at once lets the writer drop it from its history unsent).
+    while (!leaving_.empty() && leaving_.front().first + kReleaseAfterSteps <= k) {
+      states_.unregister(leaving_.front().second);
+      leaving_.pop_front();
+    }
     for (const VehicleReport& r : out.states) {
       const msg::VehicleState m = to_msg(r, self_, k, time_s, road_);
       states_.write(m);
@@ -63,9 +72,9 @@ class RegionPublisher {
     for (const Handoff& h : out.handoffs) {
       handoffs_.write(to_msg(h, time_s, road_));
       ++written[static_cast<std::size_t>(Topic::kHandoff)];
-      msg::VehicleState key;  // the vehicle leaves this owner: release its instance
+      msg::VehicleState key;  // the vehicle leaves this owner: release its instance later
       key.id(h.vehicle.id);
-      if (h.from == self_) states_.unregister(key);
+      if (h.from == self_) leaving_.emplace_back(k, key);
     }
     return written;
   }
@@ -78,6 +87,8 @@ class RegionPublisher {
   Writer<msg::VehicleStatePubSubType> states_;
   Writer<msg::HandoffPubSubType> handoffs_;
   std::vector<ObservedVehicle> own_;
+  static constexpr Step kReleaseAfterSteps = 2;
+  std::deque<std::pair<Step, msg::VehicleState>> leaving_;  // (step handed on, key)
 };
 
 template <class Core>
