@@ -11,10 +11,7 @@
 #include <string>
 
 #include "process_util.hpp"
-#include "recording/checks.hpp"
-#include "recording/recording.hpp"
-#include "recording/tables.hpp"
-#include "scenario/loader.hpp"
+#include "recorded_run.hpp"
 
 namespace entourage::testing {
 namespace {
@@ -58,19 +55,11 @@ TEST_P(EgoVariant, TheWindowKeepsEveryInvariant) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(no_process_uses_domain(v.domain));
 
-  const auto sc = scenario::load_file(scenario_path);
-  ASSERT_TRUE(sc.ok());
-  std::string error;
-  const auto rec = recording::read_recording(dir + "/r.mcap", &error);
-  ASSERT_TRUE(rec) << error;
-  std::vector<std::string> types;
-  for (const auto& t : sc.config.vehicle_types) types.push_back(t.name);
-  const recording::Tables t = recording::tables_from(*rec, types);
-  ASSERT_EQ(t.ego.size(), 3001U);
-  for (const auto& c : recording::check_invariants(t, sc.config.ego.length_m, sc.config.ego.width_m)) {
-    EXPECT_TRUE(c.passed) << c.name << ": " << c.detail;
-  }
-  v.ego_check(t.ego);
+  RecordedRun run;
+  ASSERT_NO_FATAL_FAILURE(read_run(scenario_path, dir + "/r.mcap", &run));
+  ASSERT_EQ(run.tables.ego.size(), 3001U);
+  expect_invariants(run);
+  v.ego_check(run.tables.ego);
   std::filesystem::remove_all(dir);
 }
 

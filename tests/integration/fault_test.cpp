@@ -5,9 +5,6 @@
 // for byte, and every invariant holds.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "process_util.hpp"
@@ -17,13 +14,6 @@ namespace {
 
 constexpr int kDomainLossy = 143;
 constexpr int kDomainClean = 144;
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::string run_and_export(const std::string& dir, const std::string& env, int domain) {
   const std::string rec = dir + "/r.mcap";
@@ -41,8 +31,8 @@ TEST(Faults, ATenthOfTheDataMessagesLostChangesNothingInTheRecording) {
   const std::string lossy = run_and_export(fresh_dir("lossy"), "ENTOURAGE_FAULT_DROP_PERCENT=10 ", kDomainLossy);
   const std::string clean = run_and_export(fresh_dir("clean"), "", kDomainClean);
   for (const char* file : {"vehicles.csv", "ego.csv", "handoffs.csv"}) {
-    const std::string a = slurp(lossy + file);
-    const std::string b = slurp(clean + file);
+    const std::string a = file_bytes(lossy + file);
+    const std::string b = file_bytes(clean + file);
     EXPECT_GT(b.size(), 100U) << file;
     EXPECT_TRUE(a == b) << file << " differs between the lossy and the clean run";
   }

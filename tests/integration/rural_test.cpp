@@ -7,11 +7,8 @@
 #include <filesystem>
 
 #include "process_util.hpp"
-#include "recording/checks.hpp"
-#include "recording/recording.hpp"
+#include "recorded_run.hpp"
 #include "recording/summary.hpp"
-#include "recording/tables.hpp"
-#include "scenario/loader.hpp"
 
 namespace entourage::testing {
 namespace {
@@ -26,18 +23,11 @@ TEST(Rural, OvertakingsInTheOncomingLaneWithoutCollisionsAndSlowerInTheCurve) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(no_process_uses_domain(kDomainRural));
 
-  const auto sc = scenario::load_file(scenario_path);
-  ASSERT_TRUE(sc.ok());
-  std::string error;
-  const auto rec = recording::read_recording(dir + "/r.mcap", &error);
-  ASSERT_TRUE(rec) << error;
-  std::vector<std::string> types;
-  for (const auto& t : sc.config.vehicle_types) types.push_back(t.name);
-  const recording::Tables t = recording::tables_from(*rec, types);
-
-  for (const auto& c : recording::check_invariants(t, sc.config.ego.length_m, sc.config.ego.width_m)) {
-    EXPECT_TRUE(c.passed) << c.name << ": " << c.detail;  // no_overlap covers head-on collisions
-  }
+  RecordedRun run;
+  ASSERT_NO_FATAL_FAILURE(read_run(scenario_path, dir + "/r.mcap", &run));
+  const auto& sc = run.scenario;
+  const recording::Tables& t = run.tables;
+  expect_invariants(run);
   const recording::Manoeuvres m = recording::count_manoeuvres(t, sc.config);
   EXPECT_GE(m.overtakings, 3U) << "too few overtakings in ten minutes of rural traffic";
 
