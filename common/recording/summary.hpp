@@ -29,7 +29,8 @@ struct FlowMeasurement {
   // Platoons at the same detectors: headways between consecutive vehicles in a lane (both
   // crossings seen while the detector was in the window), how many were below
   // kPlatoonHeadway_s (the follower belongs to the leader's platoon), and the share the scenario's
-  // arrival headways give at the source (traffic/headways.hpp; Poisson without headways).
+  // arrival headways give at the source (traffic/headways.hpp; Poisson without headways): the
+  // direction's headways, which are a lane's only on a one-lane direction.
   std::uint64_t headways = 0;
   std::uint64_t headways_below = 0;
   double source_share_below = 0.0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <tuple>
 
 #include "core/units.hpp"
 #include "recording/checks.hpp"
@@ -89,14 +90,19 @@ bool print_report(const ReportInput& in, const recording::Tables& tables, std::o
       << " (" << ratio(pe.overtaking, pp.overtaking) << "), active " << pe.overtaken << " / " << f1(pp.overtaken)
       << " (" << ratio(pe.overtaken, pp.overtaken) << "), oncoming met " << pe.met << " / " << f1(pp.met) << " ("
       << ratio(pe.met, pp.met) << ")\n";
-  for (const auto& [name, f] : {std::pair<const char*, const recording::FlowMeasurement&>{"forward", s.forward},
-                                {"backward", s.backward}}) {
+  for (const auto& [name, f, lanes] :
+       {std::tuple<const char*, const recording::FlowMeasurement&, int>{"forward", s.forward, in.scenario.road.lanes_forward},
+        {"backward", s.backward, in.scenario.road.lanes_backward}}) {
     if (f.headways == 0) continue;
     out << "  platoons " << name << ": " << f1(100.0 * f.share_below()) << " % of " << f.headways
-        << " headways below " << f1(recording::kPlatoonHeadway_s) << " s (mean platoon "
-        << f2(recording::FlowMeasurement::platoon_size(f.share_below())) << " vehicles); the scenario's arrivals at the source: "
-        << f1(100.0 * f.source_share_below) << " % ("
-        << f2(recording::FlowMeasurement::platoon_size(f.source_share_below)) << ")\n";
+        << " headways in a lane below " << f1(recording::kPlatoonHeadway_s) << " s (mean platoon "
+        << f2(recording::FlowMeasurement::platoon_size(f.share_below())) << " vehicles)";
+    // The arrivals' headways are the direction's; on one lane they are the lane's too.
+    if (lanes == 1) {
+      out << "; the scenario's arrivals at the source: " << f1(100.0 * f.source_share_below) << " % ("
+          << f2(recording::FlowMeasurement::platoon_size(f.source_share_below)) << ")";
+    }
+    out << "\n";
   }
   out << "  lane changes: " << s.manoeuvres.lane_changes;
   if (in.scenario.road.kind == RoadKind::kRural) {
