@@ -68,7 +68,7 @@ Obstacle obstacle_in(const Vehicle& v, const LaneIndex& index, int lane, const D
       const double closing = v.speed_mps + o->speed_mps;
       // Both drivers stop short of the meeting point: each has half the gap.
       // Also when both stand: one that stopped facing the other must not creep towards it.
-      if (gap < rules.oncoming_reaction_s * closing + rules.oncoming_near_m) ob.gap_m = std::min(ob.gap_m, 0.5 * gap);
+      if (rules.oncoming_too_close(gap, closing)) ob.gap_m = std::min(ob.gap_m, 0.5 * gap);
     }
   }
   ob.closing_mps = v.speed_mps;

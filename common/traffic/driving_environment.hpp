@@ -29,6 +29,11 @@ struct DrivingRules {
   double oncoming_reaction_s = 4.0;
   // ... and always once it is this close, whatever the speeds (both may stand).
   double oncoming_near_m = 30.0;
+
+  // Do two vehicles meeting head-on in one lane, `gap_m` apart and closing at `closing_mps`, react?
+  bool oncoming_too_close(double gap_m, double closing_mps) const {
+    return gap_m < oncoming_reaction_s * closing_mps + oncoming_near_m;
+  }
 };
 
 class DrivingEnvironment {

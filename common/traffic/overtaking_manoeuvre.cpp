@@ -62,8 +62,7 @@ bool oncoming_threat(const Vehicle& v, const LaneIndex& index, const DrivingEnvi
   const Occupant* o = index.oncoming(v.direction, oncoming_lane(v, env), v.progress_m());
   if (o == nullptr) return false;
   const double gap_m = oncoming_gap(*o, v.progress_m(), v.length_m);
-  const DrivingRules& rules = env.rules();
-  return gap_m < rules.oncoming_reaction_s * (v.speed_mps + o->speed_mps) + rules.oncoming_near_m;
+  return env.rules().oncoming_too_close(gap_m, v.speed_mps + o->speed_mps);
 }
 
 // Lateral move back into the own lane: the gap beside it fits when neither the overtaker behind
