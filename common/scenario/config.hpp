@@ -148,11 +148,77 @@ struct EgoConfig {
   EgoDriverConfig driver;
 };
 
+// A role of a play: the vehicle it needs and where it must be, relative to the ego, at the
+// handover (when the ego passes trigger point 2).
+struct PlayRoleConfig {
+  std::string name;
+  int type_index = -1;                        // index into vehicle_types; -1: any type
+  Direction direction = Direction::kForward;  // kBackward: an oncoming vehicle (two-way roads)
+  // Forward roles: lane relative to the ego's lane at the handover (+1 = one to the left).
+  // Oncoming roles: lane of the oncoming direction (0 = its rightmost).
+  int lane_offset = 0;
+  double ahead_m = 0.0;           // centre to centre along the ego's direction, > 0 ahead of it
+  bool absolute_speed = false;    // speed_mps is absolute, else added to the ego's speed
+  double speed_mps = 0.0;
+  double position_tolerance_m = 10.0;
+  double speed_tolerance_mps = 2.5;
+};
+
+enum class PlayActionKind : std::uint8_t { kSpeed = 0, kLaneChange = 1, kIndicator = 2 };
+
+// A scripted action of one role once the play runs. The actions of a role run in the order they
+// are listed; each starts when the previous one of its role has started and its own conditions
+// hold (all that are set).
+struct PlayActionConfig {
+  int role = 0;                   // index into roles
+  double at_s = 0.0;              // not before this long after the handover
+  double when_gap_below_m = -1;   // and only once |centre distance to the ego| < this (< 0: no)
+  double when_ttc_below_s = -1;   // and only once the ego's time to collision with it < this (< 0: no)
+  PlayActionKind kind = PlayActionKind::kSpeed;
+  // kSpeed (a stop is speed 0): target speed, absolute or relative to the ego's speed when the
+  // action starts, reached at rate_mps2 (acceleration or deceleration).
+  bool absolute_speed = true;
+  double speed_mps = 0.0;
+  double rate_mps2 = 2.0;
+  // kLaneChange: lanes relative to its current lane (+1 left); forced (no safety test) unless
+  // `polite`; duration 0: the driver's own.
+  int lane_offset = 0;
+  bool polite = false;
+  double duration_s = 0.0;
+  // kIndicator: 0 off, 1 left, 2 right.
+  std::uint8_t indicator = 0;
+};
+
+// A stretch that must hold no vehicle but the actors at the handover, relative to the ego (centre
+// distances along its direction) in the lane `lane_offset` from the ego's.
+struct PlayClearZoneConfig {
+  int lane_offset = 0;
+  double from_m = 0.0;
+  double to_m = 0.0;
+};
+
 struct PlayConfig {
   std::uint32_t id = 0;
   std::string name;
-  double trigger1_s_m = 0.0;
-  double trigger2_s_m = 0.0;
+  double trigger1_s_m = 0.0;  // the ego passes it: start preparing
+  double trigger2_s_m = 0.0;  // the ego passes it: hand over to control, the script starts
+  std::vector<PlayRoleConfig> roles;
+  std::vector<PlayActionConfig> actions;
+  std::vector<PlayClearZoneConfig> clear;
+  double end_after_s = 30.0;       // the play ends this long after the handover
+  double end_ego_beyond_s_m = -1;  // or once the ego passes this road position (< 0: no)
+  double release_s = 5.0;          // the actors return to everyday driving over this time
+};
+
+// How the director prepares plays (scenario `director`).
+struct DirectorConfig {
+  double accel_memory_s = 5.0;          // start-time estimate: how long the ego's acceleration lasts
+  double max_speed_offset_mps = 8.0;    // transport: at most this far from the speed at the start
+  double min_speed_mps = 5.0;           // transport: never slower (except a role's own start speed)
+  double approach_time_s = 6.0;         // transport: the position error closes no faster than this
+  double max_jerk_mps3 = 2.0;           // actors' acceleration rises no faster than this
+  double lane_change_cost_mps = 2.0;    // casting: cost of each lane change, as a speed change
+  double hidden_margin_m = 50.0;        // created vehicles: at least this far beyond the inner region
 };
 
 struct ScenarioConfig {
@@ -168,6 +234,7 @@ struct ScenarioConfig {
   double demand_regulation_gain = 4.0;  // see scenario.proto, Demand.regulation_gain
   EgoConfig ego;
   std::vector<PlayConfig> plays;
+  DirectorConfig director;
   SpeedAdaptationParams speed_adaptation;
   OvertakingParams overtaking;
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/ids.hpp"
+#include "traffic/actor_control.hpp"
 #include "traffic/handoff.hpp"
 #include "traffic/vehicle.hpp"
 #include "traffic/world.hpp"
@@ -21,6 +22,7 @@ struct StepInput {
   std::optional<EgoObservation> ego_prev;   // the ego at step - 1
   std::vector<ObservedVehicle> world_prev;  // every vehicle published for step - 1
   std::vector<Handoff> handoffs;            // handoffs received since the previous step
+  std::vector<ActorCommand> commands;       // director commands written at step - 1, by vehicle id
 };
 
 struct VehicleReport {

@@ -8,6 +8,7 @@
 #include "behaviour/hdm.hpp"
 #include "behaviour/mobil.hpp"
 #include "behaviour/model_registry.hpp"
+#include "traffic/actor_control.hpp"
 #include "core/ids.hpp"
 
 namespace entourage {
@@ -89,6 +90,7 @@ struct Vehicle {
   OvertakingState overtaking;
   // A lane the vehicle must reach (a play asks for it); -1: none. Closed lanes ask by themselves.
   int requested_lane = -1;
+  ActorControl control;  // what the event director asks of it (autonomous unless cast in a play)
   DriverParams driver;
   HdmErrors hdm_errors;                // the driver's current estimation errors (HDM)
   HdmMemory hdm_memory;                // its recent decisions, for the reaction time (not handed over)

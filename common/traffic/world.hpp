@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/ids.hpp"
+#include "traffic/actor_control.hpp"
 #include "traffic/lane_index.hpp"
 
 namespace entourage {
@@ -35,6 +36,7 @@ struct ObservedVehicle {
   int lane = 0;
   int target_lane = 0;
   std::uint8_t type_index = 0;
+  ControlMode control = ControlMode::kAutonomous;  // an actor of a play when not autonomous
   double s_m = 0.0;
   double d_m = 0.0;
   double speed_mps = 0.0;
