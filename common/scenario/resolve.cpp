@@ -197,7 +197,14 @@ ScenarioConfig resolve(const Scenario& s) {
   c.demand_regulation_gain = s.demand().regulation_gain();
   c.ego = resolve_ego(s.ego());
   std::uint32_t id = 1;
-  for (const auto& p : s.play()) c.plays.push_back({id++, p.name(), p.trigger1_s_m(), p.trigger2_s_m()});
+  for (const auto& p : s.play()) {
+    PlayConfig play;
+    play.id = id++;
+    play.name = p.name();
+    play.trigger1_s_m = p.trigger1_s_m();
+    play.trigger2_s_m = p.trigger2_s_m();
+    c.plays.push_back(play);
+  }
   c.speed_adaptation = resolve_speed_adaptation(s.speed_adaptation());
   c.overtaking = resolve_overtaking(s.overtaking());
   return c;
