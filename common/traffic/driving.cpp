@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "traffic/actor_driving.hpp"
 #include "traffic/lane_changes.hpp"
 #include "traffic/overtaking_manoeuvre.hpp"
 
@@ -17,6 +18,9 @@ constexpr double kEmergencyStandstillGap_m = 0.5;
 constexpr std::size_t kMaxAnticipated = 8;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// A controlled actor's car following runs at this desired speed: only its interaction with the
+// vehicle ahead limits what the script asks (actor_driving.hpp).
+constexpr double kScriptedCarFollowingSpeed_mps = 100.0;
 
 LeaderView view_of(const Occupant& leader, const Vehicle& v) {
   return LeaderView{gap_between(leader, v.progress_m(), v.length_m), leader.speed_mps, leader.accel_mps2};
@@ -168,8 +172,8 @@ void finish_lane_change_if_done(Vehicle& v) {
 
 CarFollowingParams local_params(const Vehicle& v, const DrivingEnvironment& env) {
   CarFollowingParams cf = v.driver.car_following;
-  cf.idm.desired_speed_mps =
-      env.speeds().desired_speed_mps(v.direction, v.s_m, v.driver.desired_speed_mps(), v.driver.basic_median_mps());
+  cf.idm.desired_speed_mps = actor_desired_speed_mps(
+      v, env.speeds().desired_speed_mps(v.direction, v.s_m, v.driver.desired_speed_mps(), v.driver.basic_median_mps()));
   return cf;
 }
 
@@ -210,9 +214,12 @@ Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingEnvironme
   d.overtaking = v.overtaking;
   CarFollowingParams cf = local_params(v, env);
 
+  const bool scripted = v.control.mode == ControlMode::kControlled;
+  if (scripted) cf.idm.desired_speed_mps = kScriptedCarFollowingSpeed_mps;  // the script sets the speed
+
   double accel_cap = kInfinity;
   bool lateral_decided = false;
-  if (overtakes(v, env) || v.overtaking.active()) {
+  if ((overtakes(v, env) && chooses_lanes_freely(v)) || v.overtaking.active()) {
     const OvertakingStep ot = overtaking_step(v, index, env, cf.idm.desired_speed_mps);
     d.overtaking = ot.state;
     d.rng_state = ot.rng_state;
@@ -227,6 +234,12 @@ Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingEnvironme
     }
   }
   if (!lateral_decided) {
+    if (auto lc = scripted_lane_change(v, index, env)) {
+      d.lane_change = *lc;
+      lateral_decided = true;
+    }
+  }
+  if (!lateral_decided) {
     const LaneChangePlan plan = plan_lane_change(v, cf, index, env);
     d.lane_change = plan.state;
     d.mandatory_change = plan.mandatory;
@@ -234,7 +247,9 @@ Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingEnvironme
 
   const Longitudinal lon = longitudinal(v, cf, index, env);
   d.hdm_decided_mps2 = lon.decided_mps2;
-  d.accel_mps2 = std::max(std::min(lon.applied_mps2, accel_cap), -v.driver.max_decel_mps2);
+  double a = std::min(lon.applied_mps2, accel_cap);
+  if (scripted) a = scripted_accel_mps2(v, a, cf.idm.max_accel_mps2, env.dt_s());
+  d.accel_mps2 = std::max(limit_rise_mps2(v, a, env.dt_s()), -v.driver.max_decel_mps2);
   d.emergency = lon.emergency;
   return d;
 }

@@ -22,6 +22,24 @@ void Fleet::adopt(const Handoff& h, Step last_step, double dt_s) {
   }
 }
 
+Vehicle* Fleet::find(VehicleId id) {
+  Vehicle probe;
+  probe.id = id;
+  auto it = std::lower_bound(vehicles_.begin(), vehicles_.end(), probe, by_id);
+  return it != vehicles_.end() && it->id == id ? &*it : nullptr;
+}
+
+std::size_t apply_commands(Fleet& fleet, const std::vector<ActorCommand>& commands) {
+  std::size_t n = 0;
+  for (const ActorCommand& c : commands) {
+    if (Vehicle* v = fleet.find(c.vehicle)) {
+      v->control = c.control;
+      ++n;
+    }
+  }
+  return n;
+}
+
 bool Fleet::owns(VehicleId id) const {
   Vehicle probe;
   probe.id = id;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "traffic/actor_control.hpp"
 #include "traffic/handoff.hpp"
 #include "traffic/lane_index.hpp"
 #include "traffic/vehicle.hpp"
@@ -17,6 +18,7 @@ class Fleet {
   // real time) is brought forward to last_step at constant speed, so nothing is lost.
   void adopt(const Handoff& h, Step last_step, double dt_s);
   bool owns(VehicleId id) const;
+  Vehicle* find(VehicleId id);  // nullptr if not owned
   std::size_t size() const { return vehicles_.size(); }
   std::vector<Vehicle>& vehicles() { return vehicles_; }
   const std::vector<Vehicle>& vehicles() const { return vehicles_; }
@@ -52,5 +54,10 @@ std::size_t adopt_handoffs(Fleet& fleet, HandoffInbox& inbox, std::vector<Handof
 // world's copy of owned vehicles is the fleet's own state), and the ego.
 void build_index(LaneIndex& index, const Fleet& fleet, const std::vector<ObservedVehicle>& world,
                  const EgoObservation* ego);
+
+// Gives each owned vehicle the control the director last wrote for it (commands are in vehicle
+// id order; for one vehicle the later one wins). Commands for vehicles owned elsewhere are left
+// to their owner. Returns how many were applied.
+std::size_t apply_commands(Fleet& fleet, const std::vector<ActorCommand>& commands);
 
 }  // namespace entourage

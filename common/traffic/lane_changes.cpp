@@ -1,5 +1,6 @@
 #include "traffic/lane_changes.hpp"
 
+#include "traffic/actor_driving.hpp"
 #include "traffic/driving.hpp"
 
 namespace entourage {
@@ -77,9 +78,8 @@ bool lane_allowed(const Vehicle& v, int lane, const DrivingEnvironment& env) {
 int mandatory_target_lane(const Vehicle& v, const DrivingEnvironment& env) {
   const int lanes = env.lanes(v.direction);
   if (v.lane >= lanes) return -1;  // in the oncoming lane: the overtaking manoeuvre decides
-  if (v.requested_lane >= 0 && v.requested_lane < lanes && v.requested_lane != v.lane) {
-    return v.requested_lane < v.lane ? v.lane - 1 : v.lane + 1;
-  }
+  const int wanted = v.requested_lane >= 0 ? v.requested_lane : director_lane(v);
+  if (wanted >= 0 && wanted < lanes && wanted != v.lane) return wanted < v.lane ? v.lane - 1 : v.lane + 1;
   const double lookahead = env.rules().mandatory_lookahead_m;
   if (!env.ahead().closed_within(v.direction, v.lane, v.s_m, lookahead)) return -1;
   for (int target : {v.lane - 1, v.lane + 1}) {  // the right one first
@@ -143,7 +143,7 @@ LaneChangePlan plan_lane_change(const Vehicle& v, const CarFollowingParams& cf, 
         plan.mandatory = true;
         break;
       }
-      if (!uses_lane_changes(v) || lc.since_last_change_s < rules.min_interval_s) break;
+      if (!uses_lane_changes(v) || !chooses_lanes_freely(v) || lc.since_last_change_s < rules.min_interval_s) break;
       if (lc.decision_wait_s > 0.5 * dt_s) {
         lc.decision_wait_s -= dt_s;
         break;

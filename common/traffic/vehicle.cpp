@@ -11,7 +11,10 @@ double LaneChangeState::lateral_fraction() const {
 }
 
 Indicator Vehicle::indicator() const {
-  if (!lane_change.active() || lane_change.to_lane == lane_change.from_lane) return Indicator::kOff;
+  if (!lane_change.active() || lane_change.to_lane == lane_change.from_lane) {
+    // A controlled actor shows what its script asks (e.g. before a cut-in).
+    return control.mode == ControlMode::kControlled ? static_cast<Indicator>(control.indicator) : Indicator::kOff;
+  }
   // Lane numbers grow to the left for both directions.
   return lane_change.to_lane > lane_change.from_lane ? Indicator::kLeft : Indicator::kRight;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "meso/core/meso_lanes.hpp"
+#include "traffic/actor_driving.hpp"
 #include "traffic/driving.hpp"
 #include "traffic/lane_changes.hpp"
 #include "meso/core/meso_model.hpp"
@@ -45,6 +46,7 @@ StepOutput MesoCore::step(const StepInput& in) {
 
 void MesoCore::adopt(const StepInput& in) {
   counters_.adopted += adopt_handoffs(fleet_, inbox_, in.handoffs, in.step, scenario_.step_s);
+  counters_.commands_applied += apply_commands(fleet_, in.commands);
   counters_.duplicate_handoffs = inbox_.duplicates();
 }
 
@@ -99,12 +101,13 @@ void MesoCore::move() {
   next.reserve(fleet_.size());
   for (const Vehicle& v : fleet_.vehicles()) {
     const Ahead ahead = ahead_of(v);
-    const double desired = env_.speeds().desired_speed_mps(v.direction, v.s_m, v.driver.desired_speed_mps(),
-                                                           v.driver.basic_median_mps());
+    const double desired = actor_desired_speed_mps(
+        v, env_.speeds().desired_speed_mps(v.direction, v.s_m, v.driver.desired_speed_mps(), v.driver.basic_median_mps()));
     const MesoSpeed ms = next_speed(v, equilibrium_of(v), ahead, desired, dt, model_);
     if (ms.emergency) ++counters_.emergency_stops;
     const int must = mandatory_target_lane(v, env_);
-    const std::optional<int> lane = choose_lane(v, index_, ahead.gap_m, lane_rules_, must);
+    const bool may_change = must >= 0 || chooses_lanes_freely(v);  // actors only where the director asks
+    const std::optional<int> lane = may_change ? choose_lane(v, index_, ahead.gap_m, lane_rules_, must) : std::nullopt;
     if (lane && must >= 0) ++counters_.mandatory_lane_changes;
     next.push_back({ms.speed_mps, lane});
   }

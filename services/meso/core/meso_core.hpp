@@ -2,7 +2,8 @@
 // The outer regions: a cheaper, mesoscopic simulation of the vehicles between the inner region
 // and the window's edges (thesis ch. 3.2, paper II). One process may serve both outer regions or
 // only the front or the rear one. Phases of a step:
-//   adopt     handoffs addressed to this meso instance join the fleet
+//   adopt     handoffs addressed to this meso instance join the fleet; director commands reach
+//             their actors
 //   perceive  the lane index from the fleet, the rest of the world at step-1 and the ego
 //   move      every vehicle's next speed from its gap and its desired speed at its place
 //             (meso_model.hpp) and lane choice (meso_lanes.hpp) from the same snapshot, then
@@ -34,6 +35,7 @@ struct Counters {
   std::uint64_t retired = 0;
   std::uint64_t to_front_zone = 0;  // left ahead in the ego's direction: on to the generator
   std::uint64_t duplicate_handoffs = 0;
+  std::uint64_t commands_applied = 0;  // director commands to vehicles owned here
   std::uint64_t emergency_stops = 0;  // vehicle-steps where the floor-gap guard overrode braking
   std::uint64_t mandatory_lane_changes = 0;
 };

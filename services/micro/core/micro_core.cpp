@@ -20,6 +20,7 @@ StepOutput MicroCore::step(const StepInput& in) {
 
 void MicroCore::adopt(const StepInput& in) {
   counters_.adopted += adopt_handoffs(fleet_, inbox_, in.handoffs, in.step, scenario_.step_s);
+  counters_.commands_applied += apply_commands(fleet_, in.commands);
   counters_.duplicate_handoffs = inbox_.duplicates();
 }
 

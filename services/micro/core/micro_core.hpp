@@ -4,7 +4,7 @@
 // ego is a vehicle like any other to them. Vehicles arrive and leave by handoffs only.
 //
 // A step is five phases, each writing only its own output:
-//   adopt     handoffs addressed to micro join the fleet
+//   adopt     handoffs addressed to micro join the fleet; director commands reach their actors
 //   perceive  the lane index from the fleet, the rest of the world at step-1 and the ego
 //   decide    every driver's acceleration and lane change, from that same snapshot
 //   move      commit the decisions and integrate over dt
@@ -36,6 +36,7 @@ struct Counters {
   std::uint64_t handoffs_deferred = 0;  // vehicle-steps kept beyond a border while overtaking
   std::uint64_t emergency_decisions = 0;  // vehicle-steps in the emergency regime
   std::uint64_t duplicate_handoffs = 0;
+  std::uint64_t commands_applied = 0;  // director commands to vehicles owned here
 };
 
 class MicroCore {
