@@ -6,6 +6,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+
 namespace entourage {
 namespace {
 
@@ -29,14 +31,22 @@ int run(const dds::ServiceContext& ctx) {
   const auto plays = shell.node.writer<msg::PlayStatusPubSubType>(dds::Topic::kPlayStatus);
   if (!shell.discover(ctx)) return 1;
 
-  director::DirectorCore core(ctx.scenario.config);
+  director::DirectorCore core(ctx.scenario.config, ctx.seed);
   dds::run_step_loop(
       ctx, shell.inbox, shell.done, shell.status,
       [&](Step k) {
-        const EgoObservation ego = dds::from_msg(*shell.inbox.ego(k));
-        if (k > 0) shell.inbox.take(k - 1);
+        director::DirectorInput in;
+        in.step = k;
+        in.ego = dds::from_msg(*shell.inbox.ego(k));
+        if (k > 0) {
+          for (const auto& m : shell.inbox.take(k - 1).vehicles) in.world.push_back(dds::from_msg(m));
+        }
+        std::sort(in.world.begin(), in.world.end(),
+                  [](const ObservedVehicle& a, const ObservedVehicle& b) { return a.id < b.id; });
+        const director::DirectorOutput out = core.step(in);
+        const EgoObservation& ego = in.ego;
         dds::TopicCounts written{};
-        for (const auto& r : core.step(ego)) {
+        for (const auto& r : out.reports) {
           plays.write(to_msg(r, k, ego.time_s));
           if (!r.detail.empty()) spdlog::info("play \"{}\": {}: {}", r.name, director::to_string(r.phase), r.detail);
           ++written[static_cast<std::size_t>(dds::Topic::kPlayStatus)];

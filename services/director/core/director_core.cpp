@@ -1,59 +1,65 @@
 #include "director/core/director_core.hpp"
 
-#include <cmath>
+#include <algorithm>
+
+#include "traffic/driver_draw.hpp"
 
 namespace entourage::director {
 
 namespace {
-// A new start-time estimate is published when it moves by more than this.
-constexpr double kEstimateReportThreshold_s = 0.5;
-// Below this speed the ego is considered stopped and the start time unknown.
-constexpr double kStoppedSpeed_mps = 0.1;
+// Labels of the director's random streams (independent of every other service's).
+constexpr std::uint64_t kDirectorStreamLabel = 0xD1EC7042ULL;
+constexpr std::uint64_t kCreatedDriverLabel = 0xC2EA7EDULL;
 }  // namespace
 
-const char* to_string(PlayPhase p) {
-  switch (p) {
-    case PlayPhase::kWaiting: return "waiting";
-    case PlayPhase::kPreparing: return "preparing";
-    case PlayPhase::kCast: return "cast";
-    case PlayPhase::kTransporting: return "transporting";
-    case PlayPhase::kHandedOver: return "handed_over";
-    case PlayPhase::kRunning: return "running";
-    case PlayPhase::kDone: return "done";
-    case PlayPhase::kFailed: return "failed";
-  }
-  return "unknown";
+DirectorCore::Factory::Factory(const ScenarioConfig& scenario, std::uint64_t seed)
+    : scenario_(scenario), seed_(seed), rng_(Random::derived(seed, kDirectorStreamLabel)) {}
+
+double DirectorCore::Factory::length_m(int type_index) const {
+  return scenario_.vehicle_types.at(static_cast<std::size_t>(type_index)).length_m;
 }
 
-DirectorCore::DirectorCore(const ScenarioConfig& scenario) : scenario_(scenario) {
-  for (const auto& p : scenario.plays) plays_.push_back({p, PlayPhase::kWaiting, -1.0});
+Vehicle DirectorCore::Factory::make(int type_index, Direction dir, int lane, double s_m, double speed_mps) {
+  const VehicleTypeConfig& type = scenario_.vehicle_types.at(static_cast<std::size_t>(type_index));
+  const VehicleId id = next_id_++;
+  const double desired = draw(type.driver.desired_speed_mps, rng_);
+  const std::uint64_t driver_seed = Random::derived(seed_, kCreatedDriverLabel ^ id).next_u64();
+  const DriverParams driver = draw_driver(type, desired, driver_seed, rng_);
+  return make_vehicle(id, static_cast<std::uint8_t>(type_index), type, dir, lane, s_m, speed_mps, driver);
 }
 
-std::vector<PlayReport> DirectorCore::step(const EgoObservation& ego) {
-  std::vector<PlayReport> reports;
-  for (Play& play : plays_) {
-    const PlayPhase before = play.phase;
-    std::string detail;
-    if (play.phase == PlayPhase::kWaiting && ego.s_m >= play.config.trigger1_s_m) {
-      play.phase = PlayPhase::kPreparing;
-      detail = "trigger point 1 passed";
-    }
-    if (play.phase == PlayPhase::kPreparing && ego.s_m >= play.config.trigger2_s_m) {
-      play.phase = PlayPhase::kFailed;
-      detail = "trigger point 2 passed; no actors: casting and transport are not built yet";
-    }
-    double estimate = -1.0;
-    if (play.phase == PlayPhase::kPreparing && ego.speed_mps > kStoppedSpeed_mps) {
-      estimate = ego.time_s + (play.config.trigger2_s_m - ego.s_m) / ego.speed_mps;
-    }
-    const bool estimate_moved = std::abs(estimate - play.reported_estimate_s) > kEstimateReportThreshold_s;
-    if (!first_ && before == play.phase && !estimate_moved) continue;
-    play.reported_estimate_s = estimate;
-    reports.push_back({play.config.id, play.config.name, play.phase, ego.s_m, play.config.trigger1_s_m,
-                       play.config.trigger2_s_m, estimate, detail});
+DirectorCore::DirectorCore(const ScenarioConfig& scenario, std::uint64_t seed)
+    : scenario_(scenario), factory_(scenario_, seed) {
+  const PlaySetting setting{scenario_.director, scenario_.window,
+                            Lanes{scenario_.road.lanes_forward, scenario_.road.lanes_backward}};
+  for (const PlayConfig& p : scenario_.plays) plays_.emplace_back(p, setting);
+}
+
+DirectorOutput DirectorCore::step(const DirectorInput& in) {
+  DirectorOutput out;
+  // A vehicle is free to cast unless it acts already (its owner publishes its control) or a
+  // play holds it (its command may not have reached it yet).
+  std::vector<VehicleId> held;
+  for (const PlayRun& p : plays_) {
+    for (VehicleId id : p.holds()) held.push_back(id);
   }
-  first_ = false;
-  return reports;
+  std::sort(held.begin(), held.end());
+  std::vector<bool> available(in.world.size());
+  for (std::size_t i = 0; i < in.world.size(); ++i) {
+    const ObservedVehicle& v = in.world[i];
+    available[i] = v.control == ControlMode::kAutonomous && !std::binary_search(held.begin(), held.end(), v.id);
+  }
+  const ServiceId self{Role::kDirector, 0};
+  for (PlayRun& play : plays_) {
+    PlayOutput po = play.step(PlayInput{in.step, scenario_.step_s, in.ego, in.world, available, factory_});
+    if (po.report) out.reports.push_back(std::move(*po.report));
+    out.commands.insert(out.commands.end(), po.commands.begin(), po.commands.end());
+    for (std::size_t i = 0; i < po.created.size(); ++i) {
+      out.births.push_back(make_handoff(po.created[i], in.step, self, Role::kMeso, po.created_regions[i],
+                                        HandoffReason::kDirector));
+    }
+  }
+  return out;
 }
 
 }  // namespace entourage::director

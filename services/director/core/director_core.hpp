@@ -1,62 +1,57 @@
 #pragma once
-// The event director (thesis ch. 3.1, papers III-IV): turns autonomous traffic into a scripted
-// play at a given place. This core follows each play's trigger points as the ego drives:
-//   waiting    -> preparing   when the ego passes trigger point 1
-//   preparing  -> failed      when the ego passes trigger point 2: casting, transporting and
-//                             handing over actors are not built yet, and the status says so.
-// It estimates, while preparing, when the ego will reach trigger point 2 from its current speed.
+// The event director (thesis ch. 3.1, papers III-IV): turns autonomous traffic into scripted
+// plays at given places without the driver noticing. Each play runs on its own (play.hpp); the
+// core gives them the step's world, keeps two plays from casting the same vehicle, makes the
+// vehicles they create (ids from kDirectorFirstVehicleId, drivers drawn from the scenario's
+// types with the director's own seeded stream) and hands those to meso.
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
+#include "core/random.hpp"
+#include "director/core/play.hpp"
 #include "scenario/config.hpp"
+#include "traffic/handoff.hpp"
 #include "traffic/world.hpp"
 
 namespace entourage::director {
 
-enum class PlayPhase : std::uint8_t {
-  kWaiting = 0,
-  kPreparing = 1,
-  kCast = 2,
-  kTransporting = 3,
-  kHandedOver = 4,
-  kRunning = 5,
-  kDone = 6,
-  kFailed = 7,
+struct DirectorInput {
+  Step step = 0;
+  EgoObservation ego;                  // at this step
+  std::vector<ObservedVehicle> world;  // every vehicle published for step - 1, sorted by id
 };
 
-const char* to_string(PlayPhase p);
-
-struct PlayReport {
-  std::uint32_t play_id = 0;
-  std::string name;
-  PlayPhase phase = PlayPhase::kWaiting;
-  double ego_s_m = 0.0;
-  double trigger1_s_m = 0.0;
-  double trigger2_s_m = 0.0;
-  double estimated_start_time_s = -1.0;
-  std::string detail;
+struct DirectorOutput {
+  std::vector<PlayReport> reports;
+  std::vector<ActorCommand> commands;  // by play, then as decided
+  std::vector<Handoff> births;         // vehicles created out of sight, handed to meso
 };
 
 class DirectorCore {
  public:
-  explicit DirectorCore(const ScenarioConfig& scenario);
+  DirectorCore(const ScenarioConfig& scenario, std::uint64_t seed);
 
-  // The reports to publish at this step: every play at step 0, afterwards those whose phase
-  // changed or whose start-time estimate moved by more than the reporting threshold.
-  std::vector<PlayReport> step(const EgoObservation& ego);
+  DirectorOutput step(const DirectorInput& in);
+  const std::vector<PlayRun>& plays() const { return plays_; }
 
  private:
-  struct Play {
-    PlayConfig config;
-    PlayPhase phase = PlayPhase::kWaiting;
-    double reported_estimate_s = -1.0;
+  class Factory : public VehicleFactory {
+   public:
+    Factory(const ScenarioConfig& scenario, std::uint64_t seed);
+    double length_m(int type_index) const override;
+    Vehicle make(int type_index, Direction dir, int lane, double s_m, double speed_mps) override;
+
+   private:
+    const ScenarioConfig& scenario_;
+    std::uint64_t seed_;
+    Random rng_;
+    VehicleId next_id_ = kDirectorFirstVehicleId;
   };
 
   ScenarioConfig scenario_;
-  std::vector<Play> plays_;
-  bool first_ = true;
+  Factory factory_;
+  std::vector<PlayRun> plays_;
 };
 
 }  // namespace entourage::director

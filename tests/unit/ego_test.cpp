@@ -1,8 +1,7 @@
-// The ego stand-in's drivers and the director's trigger points.
+// The ego stand-in's drivers.
 #include <gtest/gtest.h>
 
 #include "core_test_util.hpp"
-#include "director/core/director_core.hpp"
 #include "ego/core/ego_core.hpp"
 
 namespace entourage {
@@ -139,32 +138,6 @@ TEST(EgoCore, KnowsWhenTheRoadEnds) {
   EXPECT_FALSE(core.at_road_end());
   for (Step k = 1; k <= 20; ++k) core.step(k, {});
   EXPECT_TRUE(core.at_road_end());
-}
-
-TEST(DirectorCore, ReportsEveryPlayFirstThenItsTriggerPoints) {
-  ScenarioConfig sc = minimal_scenario();
-  sc.plays = {{1, "brake", 2000.0, 2600.0}, {2, "cut-in", 5000.0, 5500.0}};
-  director::DirectorCore core(sc);
-  EgoObservation ego = testing::ego_at(0, 1000.0, 30.0);
-  auto r = core.step(ego);
-  ASSERT_EQ(r.size(), 2U);
-  EXPECT_EQ(r[0].phase, director::PlayPhase::kWaiting);
-  ego = testing::ego_at(1, 1001.0, 30.0);
-  EXPECT_TRUE(core.step(ego).empty());  // nothing changed
-  ego = testing::ego_at(40, 2000.0, 30.0);
-  r = core.step(ego);
-  ASSERT_EQ(r.size(), 1U);
-  EXPECT_EQ(r[0].phase, director::PlayPhase::kPreparing);
-  EXPECT_NEAR(r[0].estimated_start_time_s, 4.0 + 600.0 / 30.0, 1e-9);  // at 30 m/s, 600 m to go
-  ego = testing::ego_at(41, 2003.0, 20.0);  // the driver slows down: the estimate moves
-  r = core.step(ego);
-  ASSERT_EQ(r.size(), 1U);
-  EXPECT_NEAR(r[0].estimated_start_time_s, 4.1 + 597.0 / 20.0, 1e-9);
-  ego = testing::ego_at(80, 2600.0, 20.0);
-  r = core.step(ego);
-  ASSERT_EQ(r.size(), 1U);
-  EXPECT_EQ(r[0].phase, director::PlayPhase::kFailed);
-  EXPECT_NE(r[0].detail.find("not built"), std::string::npos);
 }
 
 }  // namespace

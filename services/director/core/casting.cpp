@@ -1,0 +1,136 @@
+#include "director/core/casting.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "director/core/assignment.hpp"
+#include "director/core/transport.hpp"
+
+namespace entourage::director {
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// A new vehicle's place is searched in steps of this much around the ideal one.
+constexpr double kPlacementStep_m = 20.0;
+constexpr int kPlacementTries = 20;
+// Created vehicles are kept this far inside the window's edges (so they are not retired at once).
+constexpr double kEdgeMargin_m = 30.0;
+// Safe gap for a created vehicle to its neighbours: standstill distance plus a time gap.
+constexpr double kPlacementStandstill_m = 5.0;
+constexpr double kPlacementTimeGap_s = 1.5;
+
+// A vehicle whose best plan misses the slot by up to this share of the role's tolerance may
+// still be cast (re-planning on the way closes most of it).
+constexpr double kCastingSlack = 0.5;
+
+bool type_fits(const PlayRoleConfig& role, const ObservedVehicle& v) {
+  return role.type_index < 0 || role.type_index == static_cast<int>(v.type_index);
+}
+
+// The extra speed change a creation is worth: a fitting vehicle of the traffic is preferred
+// unless it would have to change its speed by more than the transport band allows anyway.
+double creation_cost(const DirectorConfig& cfg) { return cfg.max_speed_offset_mps; }
+
+bool gap_is_free(const Slot& slot, double s_m, double length_m, double speed_mps, const CastingSituation& at) {
+  const int dir = sign(slot.direction);
+  const double p = dir * s_m;
+  auto clear = [&](double centre_p, double other_length_m, double follower_speed_mps) {
+    const double bumper = std::abs(centre_p - p) - 0.5 * (other_length_m + length_m);
+    return bumper >= kPlacementStandstill_m + kPlacementTimeGap_s * follower_speed_mps;
+  };
+  for (const ObservedVehicle& v : at.world) {
+    if (!occupies(v, slot.direction, slot.lane)) continue;
+    const double q = dir * v.s_m;
+    if (!clear(q, v.length_m, q < p ? v.speed_mps : speed_mps)) return false;
+  }
+  const EgoObservation& e = at.ego;
+  if (e.direction == slot.direction && (e.lane == slot.lane || e.target_lane == slot.lane)) {
+    const double q = dir * e.s_m;
+    if (!clear(q, e.length_m, q < p ? e.speed_mps : speed_mps)) return false;
+  }
+  return true;
+}
+}  // namespace
+
+double casting_cost(const Slot& slot, const PlayRoleConfig& role, const ObservedVehicle& v, const CastingSituation& at,
+                    const DirectorConfig& cfg) {
+  if (v.direction != slot.direction || !type_fits(role, v) || at.time_to_start_s <= 0.0) return kInf;
+  const SpeedPlan plan = plan_speed(v.speed_mps, slot.speed_mps, at.time_to_start_s,
+                                    sign(slot.direction) * (slot.s_m - v.s_m), transport_band(slot, cfg), kPlanRate_mps2);
+  if (std::abs(plan.shortfall_m) > kCastingSlack * role.position_tolerance_m) return kInf;
+  const Between b = between(slot, v.id, v.s_m, at.world, at.ego, at.ego_s_at_handover_m);
+  const bool one_lane = at.lanes.of(slot.direction) <= 1;
+  if (one_lane && (b.ego || b.vehicles > 0)) return kInf;  // actors do not overtake
+  const int lane_changes = std::abs(v.lane - slot.lane) + b.vehicles + (b.ego ? 1 : 0);
+  return std::abs(plan.cruise_mps - v.speed_mps) + cfg.lane_change_cost_mps * lane_changes;
+}
+
+std::vector<int> cast_roles(const std::vector<Slot>& slots, const PlayConfig& play, const std::vector<bool>& available,
+                            const CastingSituation& at, const DirectorConfig& cfg) {
+  const std::size_t roles = slots.size();
+  // Only vehicles that could play some role take part (keeps the programme small).
+  std::vector<std::size_t> pool;
+  std::vector<std::vector<double>> cost(roles);
+  for (std::size_t i = 0; i < at.world.size(); ++i) {
+    if (!available[i]) continue;
+    std::vector<double> c(roles);
+    bool any = false;
+    for (std::size_t r = 0; r < roles; ++r) {
+      c[r] = casting_cost(slots[r], play.roles[r], at.world[i], at, cfg);
+      any = any || std::isfinite(c[r]);
+    }
+    if (!any) continue;
+    pool.push_back(i);
+    for (std::size_t r = 0; r < roles; ++r) cost[r].push_back(c[r]);
+  }
+  const std::vector<double> unassigned(roles, creation_cost(cfg));
+  const std::vector<int> chosen = assign_roles(cost, unassigned);
+  std::vector<int> out(roles, -1);
+  for (std::size_t r = 0; r < roles; ++r) {
+    if (chosen[r] >= 0) out[r] = static_cast<int>(pool[static_cast<std::size_t>(chosen[r])]);
+  }
+  return out;
+}
+
+std::optional<Placement> hidden_placement(const Slot& slot, double length_m, const CastingSituation& at,
+                                          const WindowBounds& window, const DirectorConfig& cfg) {
+  const double t = at.time_to_start_s;
+  if (t <= 0.0) return std::nullopt;
+  const double ideal = slot.s_m - sign(slot.direction) * slot.speed_mps * t;
+  const double inner_front = window.inner_front_m + cfg.hidden_margin_m;
+  const double inner_rear = window.inner_rear_m - cfg.hidden_margin_m;
+  const struct { double lo, hi; Region region; } zones[] = {
+      {inner_front, window.front_edge_m - kEdgeMargin_m, Region::kOuterFront},
+      {window.rear_edge_m + kEdgeMargin_m, inner_rear, Region::kOuterRear},
+  };
+  const SpeedBand band = transport_band(slot, cfg);
+  const bool one_lane = at.lanes.of(slot.direction) <= 1;
+  std::optional<Placement> best;
+  double best_cost = kInf;
+  for (const auto& z : zones) {
+    if (z.hi <= z.lo) continue;
+    const double start = std::clamp(ideal, z.lo, z.hi);
+    for (int k = 0; k < kPlacementTries; ++k) {
+      const double offset = kPlacementStep_m * ((k + 1) / 2) * (k % 2 == 0 ? 1.0 : -1.0);
+      const double s = start + offset;
+      if (s < z.lo || s > z.hi) continue;
+      const double needed = needed_speed_mps(slot, s, t);
+      if (!band.contains(needed)) continue;
+      if (one_lane) {
+        const Between b = between(slot, kNoVehicle, s, at.world, at.ego, at.ego_s_at_handover_m);
+        if (b.ego || b.vehicles > 0) continue;
+      }
+      if (!gap_is_free(slot, s, length_m, needed, at)) continue;
+      const double cost = std::abs(needed - slot.speed_mps);
+      if (cost < best_cost) {
+        best_cost = cost;
+        best = Placement{s, needed, z.region};
+      }
+      break;  // the nearest free place to the ideal one in this zone
+    }
+  }
+  return best;
+}
+
+}  // namespace entourage::director

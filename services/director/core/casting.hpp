@@ -1,0 +1,46 @@
+#pragma once
+// Casting (paper IV): which vehicle plays which role. A vehicle's cost for a role is how much it
+// must change its driving to be at the role's start in time: the change from its present speed
+// to the average speed that brings it there, plus a lane-change cost for each lane to change and
+// each vehicle to get past. It cannot play the role when that average speed lies outside the
+// transport band (stage.hpp) or it would have to get past the ego where actors cannot (one lane
+// per direction: actors do not overtake). Roles are then assigned jointly (assignment.hpp);
+// a role without a fitting vehicle gets a new one, created where the driver cannot see it.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "director/core/stage.hpp"
+
+namespace entourage::director {
+
+struct CastingSituation {
+  const std::vector<ObservedVehicle>& world;
+  const EgoObservation& ego;
+  double time_to_start_s = 0.0;     // until the ego reaches trigger point 2 (estimated)
+  double ego_s_at_handover_m = 0.0; // trigger point 2
+  Lanes lanes;
+};
+
+// The cost of `v` playing a role with start `slot` (infinite: it cannot).
+double casting_cost(const Slot& slot, const PlayRoleConfig& role, const ObservedVehicle& v, const CastingSituation& at,
+                    const DirectorConfig& cfg);
+
+// The role each vehicle of `world` plays: per role the index into world, or -1 (create one).
+// `available[i]`: world[i] may be cast (not an actor of another play).
+std::vector<int> cast_roles(const std::vector<Slot>& slots, const PlayConfig& play, const std::vector<bool>& available,
+                            const CastingSituation& at, const DirectorConfig& cfg);
+
+// Where to create a vehicle of length `length_m` for `slot`: out of sight (an outer region, at
+// least hidden_margin_m beyond the inner region), from where it reaches the slot in time at a
+// speed inside the transport band, with a safe gap to its neighbours in the slot's lane.
+struct Placement {
+  double s_m = 0.0;
+  double speed_mps = 0.0;
+  Region region = Region::kOutside;
+};
+std::optional<Placement> hidden_placement(const Slot& slot, double length_m, const CastingSituation& at,
+                                          const WindowBounds& window, const DirectorConfig& cfg);
+
+}  // namespace entourage::director

@@ -1,0 +1,380 @@
+#include "director/core/play.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "director/core/casting.hpp"
+#include "director/core/transport.hpp"
+
+namespace entourage::director {
+
+namespace {
+// A new start-time estimate is reported when it moves by more than this.
+constexpr double kEstimateReportThreshold_s = 0.5;
+// Casting is retried this often while a role has no actor.
+constexpr double kCastInterval_s = 1.0;
+// Transport progress (the errors) is reported this often.
+constexpr double kProgressReportInterval_s = 1.0;
+// A created vehicle appears in the world state a few steps after its birth: not lost before.
+constexpr Step kBirthGraceSteps = 5;
+
+std::string fmt1(double x) {
+  std::ostringstream os;
+  os.setf(std::ios::fixed);
+  os.precision(1);
+  os << x;
+  return os.str();
+}
+
+bool same(const ActorControl& a, const ActorControl& b) {
+  return a.mode == b.mode && a.play_id == b.play_id && a.speed_mps == b.speed_mps && a.accel_mps2 == b.accel_mps2 &&
+         a.decel_mps2 == b.decel_mps2 && a.max_jerk_mps3 == b.max_jerk_mps3 && a.lane == b.lane &&
+         a.force_lane == b.force_lane && a.lane_change_duration_s == b.lane_change_duration_s &&
+         a.indicator == b.indicator;
+}
+}  // namespace
+
+const char* to_string(PlayPhase p) {
+  switch (p) {
+    case PlayPhase::kWaiting: return "waiting";
+    case PlayPhase::kPreparing: return "preparing";
+    case PlayPhase::kCast: return "cast";
+    case PlayPhase::kTransporting: return "transporting";
+    case PlayPhase::kHandedOver: return "handed_over";
+    case PlayPhase::kRunning: return "running";
+    case PlayPhase::kDone: return "done";
+    case PlayPhase::kFailed: return "failed";
+  }
+  return "unknown";
+}
+
+PlayRun::PlayRun(const PlayConfig& play, const PlaySetting& setting)
+    : play_(play),
+      setting_(setting),
+      estimator_(StartTimeParams{setting.director.accel_memory_s}),
+      roles_(play.roles.size()) {}
+
+std::vector<VehicleId> PlayRun::holds() const {
+  std::vector<VehicleId> out;
+  for (const auto& [id, c] : sent_) {
+    if (c.mode != ControlMode::kAutonomous) out.push_back(id);
+  }
+  for (const Role& r : roles_) {
+    if (r.actor != kNoVehicle) out.push_back(r.actor);
+  }
+  return out;
+}
+
+const ObservedVehicle* PlayRun::find(const PlayInput& in, VehicleId id) const {
+  auto it = std::lower_bound(in.world.begin(), in.world.end(), id,
+                             [](const ObservedVehicle& v, VehicleId x) { return v.id < x; });
+  return it != in.world.end() && it->id == id ? &*it : nullptr;
+}
+
+ActorControl PlayRun::transported(double speed_mps, int lane) const {
+  ActorControl c;
+  c.mode = ControlMode::kTransported;
+  c.play_id = play_.id;
+  c.speed_mps = speed_mps;
+  c.lane = lane;
+  c.max_jerk_mps3 = setting_.director.max_jerk_mps3;
+  return c;
+}
+
+void PlayRun::command(VehicleId id, const ActorControl& c, Step step, PlayOutput& out) {
+  auto it = sent_.find(id);
+  if (it != sent_.end() && same(it->second, c)) return;
+  sent_[id] = c;
+  out.commands.push_back({id, step, c});
+}
+
+void PlayRun::report(const PlayInput& in, PlayOutput& out, std::string detail) {
+  PlayReport r;
+  r.play_id = play_.id;
+  r.name = play_.name;
+  r.phase = phase_;
+  r.ego_s_m = in.ego.s_m;
+  r.trigger1_s_m = play_.trigger1_s_m;
+  r.trigger2_s_m = play_.trigger2_s_m;
+  r.estimated_start_time_s = estimated_start_s_;
+  r.created = created_count_;
+  r.cleared = static_cast<std::uint16_t>(cleared_.size());
+  for (const Role& role : roles_) {
+    if (role.actor == kNoVehicle) continue;
+    ++r.actors;
+    r.position_error_m = std::max(r.position_error_m, std::abs(role.position_error_m));
+    r.speed_error_mps = std::max(r.speed_error_mps, std::abs(role.speed_error_mps));
+  }
+  r.detail = std::move(detail);
+  reported_estimate_s_ = estimated_start_s_;
+  out.report = std::move(r);
+}
+
+PlayOutput PlayRun::step(const PlayInput& in) {
+  PlayOutput out;
+  estimator_.observe(in.ego.speed_mps, in.ego.accel_mps2, in.dt_s);
+  const double x = ego_progress(in.ego);
+  const int dir = sign(in.ego.direction);
+  const PlayPhase before = phase_;
+  std::string detail;
+  if (phase_ == PlayPhase::kWaiting && x >= dir * play_.trigger1_s_m) {
+    phase_ = PlayPhase::kPreparing;
+    detail = "trigger point 1 passed";
+  }
+  switch (phase_) {
+    case PlayPhase::kPreparing:
+    case PlayPhase::kCast:
+    case PlayPhase::kTransporting:
+      if (x >= dir * play_.trigger2_s_m) {
+        hand_over(in, out);
+        return out;
+      }
+      prepare(in, out);
+      break;
+    case PlayPhase::kHandedOver:
+    case PlayPhase::kRunning:
+      run(in, out);
+      return out;
+    case PlayPhase::kDone:
+    case PlayPhase::kFailed:
+      finish_release(in, out);
+      break;
+    case PlayPhase::kWaiting:
+      break;
+  }
+  if (out.report) return out;
+  const bool estimate_moved = std::abs(estimated_start_s_ - reported_estimate_s_) > kEstimateReportThreshold_s;
+  const bool progress_due = phase_ == PlayPhase::kTransporting &&
+                            in.ego.time_s - last_progress_report_s_ >= kProgressReportInterval_s - 1e-9;
+  if (first_report_ || before != phase_ || estimate_moved || progress_due) {
+    if (progress_due) last_progress_report_s_ = in.ego.time_s;
+    report(in, out, detail);
+  }
+  first_report_ = false;
+  return out;
+}
+
+void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
+  const double distance = sign(in.ego.direction) * (play_.trigger2_s_m - in.ego.s_m);
+  const Prediction pred = estimator_.predict(distance);
+  if (pred.time_s < 0.0) {  // the ego stands: nothing can be timed, actors hold what they have
+    estimated_start_s_ = -1.0;
+    return;
+  }
+  estimated_start_s_ = in.ego.time_s + pred.time_s;
+  const std::vector<Slot> slots = slots_of(play_, in.ego.direction, in.ego.lane, pred.speed_mps, setting_.lanes);
+  // Actors that left the world (beyond the window) are lost: their roles are cast again.
+  for (Role& r : roles_) {
+    if (r.actor == kNoVehicle || find(in, r.actor) != nullptr) continue;
+    if (r.created && in.step < r.cast_step + kBirthGraceSteps) continue;
+    sent_.erase(r.actor);
+    r = Role{};
+  }
+  const bool uncast = std::any_of(roles_.begin(), roles_.end(), [](const Role& r) { return r.actor == kNoVehicle; });
+  if (uncast && in.ego.time_s - last_cast_attempt_s_ >= kCastInterval_s - 1e-9) {
+    last_cast_attempt_s_ = in.ego.time_s;
+    cast(in, slots, pred.time_s, out);
+  }
+  const bool all_cast = std::none_of(roles_.begin(), roles_.end(), [](const Role& r) { return r.actor == kNoVehicle; });
+  if (all_cast && phase_ == PlayPhase::kPreparing) {
+    phase_ = PlayPhase::kCast;
+  } else if (all_cast && phase_ == PlayPhase::kCast) {
+    phase_ = PlayPhase::kTransporting;
+  }
+  move_actors(in, slots, pred.time_s, out);
+  clear_zones(in, slots, pred.time_s, out);
+}
+
+void PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
+  // Only the roles still without an actor are cast; the others keep theirs.
+  std::vector<std::size_t> open;
+  PlayConfig sub = play_;
+  sub.roles.clear();
+  std::vector<Slot> sub_slots;
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
+    if (roles_[r].actor != kNoVehicle) continue;
+    open.push_back(r);
+    sub.roles.push_back(play_.roles[r]);
+    sub_slots.push_back(slots[r]);
+  }
+  const CastingSituation at{in.world, in.ego, time_left_s, play_.trigger2_s_m, setting_.lanes};
+  const std::vector<int> chosen = cast_roles(sub_slots, sub, in.available, at, setting_.director);
+  const WindowBounds window = WindowBounds::around(in.ego.s_m, setting_.window);
+  std::string detail;
+  for (std::size_t k = 0; k < open.size(); ++k) {
+    Role& role = roles_[open[k]];
+    const PlayRoleConfig& rc = play_.roles[open[k]];
+    if (chosen[k] >= 0) {
+      const ObservedVehicle& v = in.world[static_cast<std::size_t>(chosen[k])];
+      in.available[static_cast<std::size_t>(chosen[k])] = false;
+      role = Role{v.id, false, in.step, -1.0, 0.0, 0.0};
+      detail += (detail.empty() ? "" : ", ") + rc.name + " = vehicle " + std::to_string(v.id);
+      continue;
+    }
+    const int type = rc.type_index >= 0 ? rc.type_index : 0;
+    const auto place = hidden_placement(sub_slots[k], in.factory.length_m(type), at, window, setting_.director);
+    if (!place) continue;  // tried again at the next casting
+    Vehicle v = in.factory.make(type, sub_slots[k].direction, sub_slots[k].lane, place->s_m, place->speed_mps);
+    v.control = transported(place->speed_mps, sub_slots[k].lane);
+    sent_[v.id] = v.control;
+    role = Role{v.id, true, in.step, place->speed_mps, 0.0, 0.0};
+    ++created_count_;
+    detail += (detail.empty() ? "" : ", ") + rc.name + " = new vehicle " + std::to_string(v.id) + " (" +
+              to_string(place->region) + ")";
+    out.created.push_back(std::move(v));
+    out.created_regions.push_back(place->region);
+  }
+  if (!detail.empty()) report(in, out, "cast: " + detail);
+}
+
+void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
+    Role& role = roles_[r];
+    if (role.actor == kNoVehicle) continue;
+    const ObservedVehicle* v = find(in, role.actor);
+    if (v == nullptr) continue;  // a created vehicle not seen yet
+    const TransportCommand t = transport(slots[r], *v, time_left_s, role.command_mps, in.dt_s, in.world, in.ego,
+                                         setting_.lanes, setting_.director);
+    role.command_mps = t.speed_mps;
+    role.position_error_m = t.position_error_m;
+    role.speed_error_mps = t.speed_error_mps;
+    command(role.actor, transported(t.speed_mps, t.lane), in.step, out);
+  }
+}
+
+void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
+  if (play_.clear.empty()) return;
+  const std::vector<ZoneAtStart> zones = zones_of(play_, in.ego.direction, in.ego.lane, setting_.lanes);
+  std::vector<int> role_lanes;
+  for (const Slot& s : slots) {
+    if (s.direction == in.ego.direction) role_lanes.push_back(s.lane);
+  }
+  for (std::size_t i = 0; i < in.world.size(); ++i) {
+    const ObservedVehicle& v = in.world[i];
+    const bool ours = std::find(cleared_.begin(), cleared_.end(), v.id) != cleared_.end();
+    if (!ours && !in.available[i]) continue;  // an actor (ours or another play's)
+    const auto c = clear_out(v, zones, time_left_s, role_lanes, setting_.lanes, setting_.director);
+    if (!c) continue;  // not in the way (a cleared one keeps its last command until the handover)
+    if (!ours) {
+      cleared_.push_back(v.id);
+      in.available[i] = false;
+    }
+    command(v.id, transported(c->speed_mps, c->lane), in.step, out);
+  }
+}
+
+void PlayRun::hand_over(const PlayInput& in, PlayOutput& out) {
+  handover_time_s_ = in.ego.time_s;
+  const int dir = sign(in.ego.direction);
+  std::string problems;
+  auto problem = [&](const std::string& p) { problems += (problems.empty() ? "" : "; ") + p; };
+  scripted_.assign(roles_.size(), ActorControl{});
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
+    Role& role = roles_[r];
+    const PlayRoleConfig& rc = play_.roles[r];
+    const ObservedVehicle* v = role.actor == kNoVehicle ? nullptr : find(in, role.actor);
+    if (v == nullptr) {
+      problem(rc.name + ": no actor");
+      continue;
+    }
+    const double ahead = dir * (v->s_m - in.ego.s_m);
+    const double speed = std::max(0.0, rc.absolute_speed ? rc.speed_mps : in.ego.speed_mps + rc.speed_mps);
+    role.position_error_m = ahead - rc.ahead_m;
+    role.speed_error_mps = v->speed_mps - speed;
+    const int lane = rc.direction == Direction::kForward ? in.ego.lane + rc.lane_offset : rc.lane_offset;
+    if (std::abs(role.position_error_m) > rc.position_tolerance_m) {
+      problem(rc.name + ": " + fmt1(role.position_error_m) + " m from its start position");
+    }
+    if (std::abs(role.speed_error_mps) > rc.speed_tolerance_mps) {
+      problem(rc.name + ": " + fmt1(role.speed_error_mps * 3.6) + " km/h from its start speed");
+    }
+    if (v->lane != lane || v->target_lane != lane) problem(rc.name + ": in lane " + std::to_string(v->lane) + ", not " + std::to_string(lane));
+    ActorControl c;
+    c.mode = ControlMode::kControlled;
+    c.play_id = play_.id;
+    c.speed_mps = v->speed_mps;  // holds its speed until the script says otherwise
+    c.accel_mps2 = c.decel_mps2 = 1.0;
+    c.max_jerk_mps3 = setting_.director.max_jerk_mps3;
+    scripted_[r] = c;
+  }
+  const std::vector<ZoneAtStart> zones = zones_of(play_, in.ego.direction, in.ego.lane, setting_.lanes);
+  for (const ObservedVehicle& v : in.world) {
+    const bool actor = std::any_of(roles_.begin(), roles_.end(), [&](const Role& r) { return r.actor == v.id; });
+    if (actor) continue;
+    for (const ZoneAtStart& z : zones) {
+      // The zone relative to where the ego is now (it has just passed trigger point 2).
+      ZoneAtStart here = z;
+      here.from_s_m += in.ego.s_m - play_.trigger2_s_m;
+      here.to_s_m += in.ego.s_m - play_.trigger2_s_m;
+      if (v.direction == here.direction && (in_zone(here, v.lane, v.s_m, v.length_m) || in_zone(here, v.target_lane, v.s_m, v.length_m))) {
+        problem("vehicle " + std::to_string(v.id) + " in a clear zone");
+      }
+    }
+  }
+  // Cleared vehicles drive on as they like again.
+  for (VehicleId id : cleared_) {
+    ActorControl c;
+    c.mode = ControlMode::kReleasing;
+    c.play_id = play_.id;
+    c.max_jerk_mps3 = setting_.director.max_jerk_mps3;
+    command(id, c, in.step, out);
+  }
+  if (!problems.empty()) {
+    phase_ = PlayPhase::kFailed;
+    release_all(in, out);
+    report(in, out, "start condition not met: " + problems);
+    return;
+  }
+  phase_ = PlayPhase::kHandedOver;
+  script_.emplace(play_);
+  for (std::size_t r = 0; r < roles_.size(); ++r) command(roles_[r].actor, scripted_[r], in.step, out);
+  report(in, out, "every role in place; the script starts");
+  run(in, out);
+}
+
+void PlayRun::run(const PlayInput& in, PlayOutput& out) {
+  const double since = in.ego.time_s - handover_time_s_;
+  std::vector<const ObservedVehicle*> actors;
+  for (const Role& r : roles_) actors.push_back(find(in, r.actor));
+  const std::size_t started = script_->step(since, in.ego, actors, scripted_, setting_.lanes.of(in.ego.direction));
+  for (std::size_t r = 0; r < roles_.size(); ++r) command(roles_[r].actor, scripted_[r], in.step, out);
+  const bool ended = since >= play_.end_after_s ||
+                     (play_.end_ego_beyond_s_m >= 0.0 &&
+                      sign(in.ego.direction) * in.ego.s_m >= sign(in.ego.direction) * play_.end_ego_beyond_s_m);
+  if (ended) {
+    phase_ = PlayPhase::kDone;
+    release_all(in, out);
+    if (!out.report) report(in, out, "ended after " + fmt1(since) + " s; actors released");
+    return;
+  }
+  if (started > 0 && phase_ == PlayPhase::kHandedOver) {
+    phase_ = PlayPhase::kRunning;
+    if (!out.report) report(in, out, "the script runs");
+  }
+}
+
+void PlayRun::release_all(const PlayInput& in, PlayOutput& out) {
+  release_until_s_ = in.ego.time_s + play_.release_s;
+  for (const Role& r : roles_) {
+    if (r.actor == kNoVehicle) continue;
+    ActorControl c;
+    c.mode = ControlMode::kReleasing;
+    c.play_id = play_.id;
+    c.max_jerk_mps3 = setting_.director.max_jerk_mps3;
+    command(r.actor, c, in.step, out);
+  }
+}
+
+void PlayRun::finish_release(const PlayInput& in, PlayOutput& out) {
+  if (released_ || in.ego.time_s < release_until_s_ - 1e-9) return;
+  released_ = true;
+  for (const auto& [id, c] : std::map<VehicleId, ActorControl>(sent_)) {
+    if (c.mode == ControlMode::kAutonomous) continue;
+    command(id, ActorControl{}, in.step, out);
+  }
+  for (Role& r : roles_) r.actor = kNoVehicle;
+  cleared_.clear();
+}
+
+}  // namespace entourage::director

@@ -1,0 +1,146 @@
+#pragma once
+// One play from trigger point 1 to the release of its actors (the theatre metaphor of paper III):
+//
+//   waiting       until the ego passes trigger point 1
+//   preparing     estimating the start time; casting roles (existing vehicles, else new ones
+//                 created out of sight), recast when an actor is lost
+//   cast          every role has an actor
+//   transporting  actors on their way to their start positions, vehicles cleared off the zones
+//   handed over   the ego passed trigger point 2 with every role in place (within tolerance)
+//   running       the first scripted action started
+//   done          the end condition held; actors released (back to everyday driving over release_s)
+//   failed        the start condition was not met (the reason says which role or zone); released
+//
+// Each step: observe the ego; act on the phase; say what changed. Commands are only written when
+// a vehicle's control changes.
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "director/core/script.hpp"
+#include "director/core/stage.hpp"
+#include "director/core/start_time.hpp"
+#include "traffic/actor_control.hpp"
+#include "traffic/handoff.hpp"
+#include "traffic/vehicle.hpp"
+
+namespace entourage::director {
+
+enum class PlayPhase : std::uint8_t {
+  kWaiting = 0,
+  kPreparing = 1,
+  kCast = 2,
+  kTransporting = 3,
+  kHandedOver = 4,
+  kRunning = 5,
+  kDone = 6,
+  kFailed = 7,
+};
+
+const char* to_string(PlayPhase p);
+
+struct PlayReport {
+  std::uint32_t play_id = 0;
+  std::string name;
+  PlayPhase phase = PlayPhase::kWaiting;
+  double ego_s_m = 0.0;
+  double trigger1_s_m = 0.0;
+  double trigger2_s_m = 0.0;
+  double estimated_start_time_s = -1.0;  // simulated time the ego is expected at trigger point 2
+  std::uint16_t actors = 0;               // roles with an actor
+  std::uint16_t created = 0;              // actors the director created
+  std::uint16_t cleared = 0;              // vehicles asked to leave a clear zone
+  double position_error_m = 0.0;          // largest over the roles (transport: to the virtual point)
+  double speed_error_mps = 0.0;           // largest over the roles
+  std::string detail;
+};
+
+// Makes the vehicles the director creates: ids, drivers, type.
+class VehicleFactory {
+ public:
+  virtual ~VehicleFactory() = default;
+  virtual double length_m(int type_index) const = 0;
+  virtual Vehicle make(int type_index, Direction dir, int lane, double s_m, double speed_mps) = 0;
+};
+
+struct PlayInput {
+  Step step = 0;
+  double dt_s = 0.1;
+  const EgoObservation& ego;
+  const std::vector<ObservedVehicle>& world;  // sorted by id
+  std::vector<bool>& available;               // per world index: free to cast (cleared as claimed)
+  VehicleFactory& factory;
+};
+
+struct PlayOutput {
+  std::optional<PlayReport> report;
+  std::vector<ActorCommand> commands;
+  std::vector<Vehicle> created;  // with their region, to hand to meso
+  std::vector<Region> created_regions;
+};
+
+struct PlaySetting {
+  DirectorConfig director;
+  WindowConfig window;
+  Lanes lanes;
+};
+
+class PlayRun {
+ public:
+  PlayRun(const PlayConfig& play, const PlaySetting& setting);
+
+  PlayOutput step(const PlayInput& in);
+  PlayPhase phase() const { return phase_; }
+  const PlayConfig& config() const { return play_; }
+  // Vehicles this play holds (actors and cleared vehicles), so no other play casts them.
+  std::vector<VehicleId> holds() const;
+
+ private:
+  struct Role {
+    VehicleId actor = kNoVehicle;
+    bool created = false;
+    Step cast_step = 0;
+    double command_mps = -1.0;  // the last desired speed given while transporting
+    double position_error_m = 0.0;
+    double speed_error_mps = 0.0;
+  };
+
+  void prepare(const PlayInput& in, PlayOutput& out);
+  void cast(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out);
+  void move_actors(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out);
+  void clear_zones(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out);
+  void hand_over(const PlayInput& in, PlayOutput& out);
+  void run(const PlayInput& in, PlayOutput& out);
+  void release_all(const PlayInput& in, PlayOutput& out);
+  void finish_release(const PlayInput& in, PlayOutput& out);
+
+  void command(VehicleId id, const ActorControl& c, Step step, PlayOutput& out);
+  ActorControl transported(double speed_mps, int lane) const;
+  const ObservedVehicle* find(const PlayInput& in, VehicleId id) const;
+  void report(const PlayInput& in, PlayOutput& out, std::string detail);
+  double ego_progress(const EgoObservation& ego) const { return sign(ego.direction) * ego.s_m; }
+
+  PlayConfig play_;
+  PlaySetting setting_;
+  PlayPhase phase_ = PlayPhase::kWaiting;
+  StartTimeEstimator estimator_;
+  std::vector<Role> roles_;
+  std::map<VehicleId, ActorControl> sent_;  // the last control written to each vehicle held
+  std::vector<VehicleId> cleared_;          // vehicles asked to leave a zone
+  std::vector<ActorControl> scripted_;      // per role, once handed over
+  std::optional<Script> script_;
+  double estimated_start_s_ = -1.0;
+  double reported_estimate_s_ = -1.0;
+  double handover_time_s_ = -1.0;
+  double release_until_s_ = -1.0;
+  double last_cast_attempt_s_ = -1e9;
+  double last_progress_report_s_ = -1e9;
+  bool first_report_ = true;
+  bool released_ = false;
+  std::uint16_t created_count_ = 0;
+};
+
+}  // namespace entourage::director

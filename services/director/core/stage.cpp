@@ -1,0 +1,107 @@
+#include "director/core/stage.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace entourage::director {
+
+std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int ego_lane, double ego_speed_mps,
+                           const Lanes& lanes) {
+  std::vector<Slot> out;
+  out.reserve(play.roles.size());
+  const double ego_s = play.trigger2_s_m;
+  for (const PlayRoleConfig& r : play.roles) {
+    Slot s;
+    s.direction = r.direction == Direction::kForward ? ego_direction : Direction{static_cast<std::int8_t>(-sign(ego_direction))};
+    const int lane = r.direction == Direction::kForward ? ego_lane + r.lane_offset : r.lane_offset;
+    s.lane = std::clamp(lane, 0, std::max(0, lanes.of(s.direction) - 1));
+    s.s_m = ego_s + sign(ego_direction) * r.ahead_m;
+    s.speed_mps = std::max(0.0, r.absolute_speed ? r.speed_mps : ego_speed_mps + r.speed_mps);
+    out.push_back(s);
+  }
+  return out;
+}
+
+SpeedBand transport_band(const Slot& slot, const DirectorConfig& cfg) {
+  SpeedBand b;
+  b.high_mps = slot.speed_mps + cfg.max_speed_offset_mps;
+  b.low_mps = std::max(std::min(cfg.min_speed_mps, slot.speed_mps), slot.speed_mps - cfg.max_speed_offset_mps);
+  return b;
+}
+
+double needed_speed_mps(const Slot& slot, double s_m, double time_s) {
+  return sign(slot.direction) * (slot.s_m - s_m) / std::max(time_s, 1e-3);
+}
+
+namespace {
+constexpr int kPlanBisections = 50;
+
+double trapezoid_distance_m(double v0, double vc, double vf, double time_s, double a) {
+  const double t1 = std::abs(vc - v0) / a;
+  const double t3 = std::abs(vc - vf) / a;
+  return 0.5 * (v0 + vc) * t1 + vc * (time_s - t1 - t3) + 0.5 * (vc + vf) * t3;
+}
+}  // namespace
+
+SpeedPlan plan_speed(double v0_mps, double v_final_mps, double time_s, double distance_m, const SpeedBand& band,
+                     double rate_mps2) {
+  SpeedPlan plan;
+  const double a = rate_mps2;
+  const double direct_s = std::abs(v_final_mps - v0_mps) / a;
+  if (time_s <= direct_s) {  // no time for anything but the change to the final speed
+    plan.cruise_mps = v_final_mps;
+    plan.final_change_s = 0.0;
+    plan.shortfall_m = distance_m - 0.5 * (v0_mps + v_final_mps) * time_s;
+    if (std::abs(plan.shortfall_m) < 1e-9) plan.shortfall_m = 0.0;
+    return plan;
+  }
+  // Cruise speeds the trapezoid can reach in time, inside the band.
+  const double reach = 0.5 * a * (time_s - direct_s);
+  double lo = std::max(band.low_mps, std::min(v0_mps, v_final_mps) - reach);
+  double hi = std::min(band.high_mps, std::max(v0_mps, v_final_mps) + reach);
+  if (lo > hi) lo = hi = std::clamp(v_final_mps, band.low_mps, band.high_mps);
+  const double d_lo = trapezoid_distance_m(v0_mps, lo, v_final_mps, time_s, a);
+  const double d_hi = trapezoid_distance_m(v0_mps, hi, v_final_mps, time_s, a);
+  if (distance_m <= d_lo || distance_m >= d_hi) {
+    const bool low = distance_m <= d_lo;
+    plan.cruise_mps = low ? lo : hi;
+    plan.shortfall_m = distance_m - (low ? d_lo : d_hi);
+  } else {
+    for (int i = 0; i < kPlanBisections; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (trapezoid_distance_m(v0_mps, mid, v_final_mps, time_s, a) < distance_m ? lo : hi) = mid;
+    }
+    plan.cruise_mps = 0.5 * (lo + hi);
+  }
+  plan.final_change_s = std::abs(plan.cruise_mps - v_final_mps) / a;
+  return plan;
+}
+
+bool occupies(const ObservedVehicle& v, Direction dir, int lane) {
+  return v.direction == dir && (v.lane == lane || v.target_lane == lane);
+}
+
+Between between(const Slot& slot, VehicleId self, double s_m, const std::vector<ObservedVehicle>& world,
+                const EgoObservation& ego, double ego_s_at_handover_m) {
+  const int dir = sign(slot.direction);
+  const double from = dir * s_m;
+  const double to = dir * slot.s_m;
+  const double lo = std::min(from, to);
+  const double hi = std::max(from, to);
+  Between b;
+  for (const ObservedVehicle& v : world) {
+    if (v.id == self || !occupies(v, slot.direction, slot.lane)) continue;
+    const double p = dir * v.s_m;
+    if (p > lo && p < hi) ++b.vehicles;
+  }
+  // The ego moves too: what counts is whether the vehicle's order relative to it changes between
+  // now and the handover (the ego at trigger point 2 then, where the slots are measured from).
+  if (ego.direction == slot.direction) {
+    const double ahead_now = dir * (s_m - ego.s_m);
+    const double ahead_then = dir * (slot.s_m - ego_s_at_handover_m);
+    b.ego = (ahead_now > 0.0) != (ahead_then > 0.0);
+  }
+  return b;
+}
+
+}  // namespace entourage::director

@@ -1,0 +1,81 @@
+#pragma once
+// Where a play's roles must be at the handover, and the geometry the director reasons in.
+// Positions are road s; "travel" coordinates are progress along a vehicle's own direction
+// (sign(direction) * s), so ahead is larger for both directions.
+
+#include <vector>
+
+#include "road/window.hpp"
+#include "scenario/config.hpp"
+#include "traffic/world.hpp"
+
+namespace entourage::director {
+
+// A role's start: lane, position and speed at the handover.
+struct Slot {
+  Direction direction = Direction::kForward;
+  int lane = 0;
+  double s_m = 0.0;       // centre at the handover
+  double speed_mps = 0.0;
+};
+
+// The roads's lanes per direction.
+struct Lanes {
+  int forward = 1;
+  int backward = 0;
+  int of(Direction d) const { return d == Direction::kForward ? forward : backward; }
+};
+
+// The slots of `play`'s roles when the ego, in `ego_lane`, reaches trigger point 2 at
+// `ego_speed_mps`. Forward means the ego's direction.
+std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int ego_lane, double ego_speed_mps,
+                           const Lanes& lanes);
+
+
+
+// The speeds an actor may drive at on its way to `slot` (never further from the slot's speed
+// than the director allows, never below its minimum unless the slot itself is slower).
+struct SpeedBand {
+  double low_mps = 0.0;
+  double high_mps = 0.0;
+  bool contains(double v) const { return v >= low_mps && v <= high_mps; }
+  double clamp(double v) const { return v < low_mps ? low_mps : (v > high_mps ? high_mps : v); }
+};
+SpeedBand transport_band(const Slot& slot, const DirectorConfig& cfg);
+
+// The average speed that brings a vehicle at `s_m` to the slot in `time_s` (in its direction).
+double needed_speed_mps(const Slot& slot, double s_m, double time_s);
+
+// How a vehicle at speed v0 gets `distance_m` further in `time_s` and arrives at speed v_f: it
+// changes speed to a cruise speed v_c at a constant rate a, cruises, and changes to v_f at the
+// same rate just in time (a trapezoid):
+//
+//   D(v_c) = (v0 + v_c)/2 |v_c - v0|/a + v_c t_cruise + (v_c + v_f)/2 |v_c - v_f|/a
+//   t_cruise = time_s - |v_c - v0|/a - |v_c - v_f|/a >= 0
+//
+// D grows with v_c, so the cruise speed is found by bisection inside the band. When no cruise
+// speed in the band covers the distance, the nearest one is taken and `shortfall_m` says by how
+// much the vehicle will miss (> 0: it arrives behind the slot).
+struct SpeedPlan {
+  double cruise_mps = 0.0;
+  double final_change_s = 0.0;  // duration of the change from the cruise speed to v_f at the end
+  double shortfall_m = 0.0;
+  bool feasible() const { return shortfall_m == 0.0; }
+};
+SpeedPlan plan_speed(double v0_mps, double v_final_mps, double time_s, double distance_m, const SpeedBand& band,
+                     double rate_mps2);
+
+// What stands between a vehicle at `s_m` and its slot: the vehicles now in the slot's lane
+// between the two positions (it must get past them), and whether its order relative to the ego
+// must change by the handover (the ego then at `ego_s_at_handover_m`).
+struct Between {
+  int vehicles = 0;
+  bool ego = false;
+};
+Between between(const Slot& slot, VehicleId self, double s_m, const std::vector<ObservedVehicle>& world,
+                const EgoObservation& ego, double ego_s_at_handover_m);
+
+// Does `v` occupy `lane` of direction `dir` (its lane or, while changing, its target lane)?
+bool occupies(const ObservedVehicle& v, Direction dir, int lane);
+
+}  // namespace entourage::director

@@ -1,0 +1,55 @@
+#include "director/core/start_time.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace entourage::director {
+
+namespace {
+constexpr int kBisectionSteps = 60;
+constexpr int kIntegrationSteps = 200;  // of the distance integral when the speed floor is reached
+}  // namespace
+
+void StartTimeEstimator::observe(double speed_mps, double accel_mps2, double dt_s) {
+  speed_mps_ = std::max(0.0, speed_mps);
+  if (!seen_) {
+    accel_mps2_ = accel_mps2;
+    seen_ = true;
+    return;
+  }
+  const double w = 1.0 - std::exp(-dt_s / p_.accel_smoothing_s);
+  accel_mps2_ += w * (accel_mps2 - accel_mps2_);
+}
+
+double StartTimeEstimator::speed_after(double t_s) const {
+  const double tau = p_.accel_memory_s;
+  return std::max(p_.floor_speed_mps, speed_mps_ + accel_mps2_ * tau * (1.0 - std::exp(-t_s / tau)));
+}
+
+double StartTimeEstimator::distance_after(double t_s) const {
+  const double tau = p_.accel_memory_s;
+  const double v_end = speed_mps_ + accel_mps2_ * tau;  // where the speed tends to
+  // The unbounded speed moves monotonically from v to v_end: if both are above the floor, the
+  // floor never applies and the integral has a closed form; otherwise integrate numerically.
+  if (speed_mps_ >= p_.floor_speed_mps && v_end >= p_.floor_speed_mps) {
+    return speed_mps_ * t_s + accel_mps2_ * tau * (t_s - tau * (1.0 - std::exp(-t_s / tau)));
+  }
+  const double h = t_s / kIntegrationSteps;
+  double x = 0.0;
+  for (int i = 0; i < kIntegrationSteps; ++i) x += h * speed_after((i + 0.5) * h);
+  return x;
+}
+
+Prediction StartTimeEstimator::predict(double distance_m) const {
+  if (distance_m <= 0.0) return {0.0, speed_after(0.0)};
+  if (distance_after(p_.horizon_s) < distance_m) return {};
+  double lo = 0.0;
+  double hi = p_.horizon_s;
+  for (int i = 0; i < kBisectionSteps && hi - lo > 1e-3; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (distance_after(mid) < distance_m ? lo : hi) = mid;
+  }
+  return {hi, speed_after(hi)};
+}
+
+}  // namespace entourage::director

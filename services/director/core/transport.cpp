@@ -1,0 +1,126 @@
+#include "director/core/transport.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace entourage::director {
+
+namespace {
+// A vehicle in the slot's lane slower than the actor's command by this much holds it up.
+constexpr double kHoldsUp_mps = 1.0;
+// It counts only if it is ahead of the actor by less than this many seconds at the command speed.
+constexpr double kHoldsUpHorizon_s = 8.0;
+// An actor that passed the ego keeps its passing lane until this far ahead of it.
+constexpr double kPassedEgoBy_m = 15.0;
+// Extra room around a zone a cleared vehicle must keep.
+constexpr double kZoneMargin_m = 5.0;
+
+int passing_lane(int lane, const Lanes& lanes, Direction dir) {
+  const int n = lanes.of(dir);
+  if (lane + 1 < n) return lane + 1;
+  if (lane - 1 >= 0) return lane - 1;
+  return lane;
+}
+
+// Is the actor held up in its slot's lane by something it must get past (a slower vehicle ahead
+// of it that is not beyond the slot, or the ego it must pass)?
+bool held_up(const Slot& slot, const ObservedVehicle& actor, double cmd_mps, double slot_p,
+             const std::vector<ObservedVehicle>& world, const EgoObservation& ego) {
+  const int dir = sign(slot.direction);
+  const double p = dir * actor.s_m;
+  if (slot_p <= p) return false;  // it falls back: followers pass it
+  const double horizon = std::min(slot_p, p + std::max(actor.speed_mps, cmd_mps) * kHoldsUpHorizon_s);
+  for (const ObservedVehicle& v : world) {
+    if (v.id == actor.id || !occupies(v, slot.direction, slot.lane)) continue;
+    const double q = dir * v.s_m;
+    if (q > p && q < horizon && v.speed_mps < cmd_mps - kHoldsUp_mps) return true;
+  }
+  if (ego.direction == slot.direction && (ego.lane == slot.lane || ego.target_lane == slot.lane)) {
+    const double q = dir * ego.s_m;
+    const bool passing = actor.lane != slot.lane;  // already beside: until it is well past
+    if (q > p - (passing ? kPassedEgoBy_m : 0.0) && q < horizon) return true;
+  }
+  return false;
+}
+}  // namespace
+
+TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, double time_left_s, double previous_cmd_mps,
+                           double dt_s, const std::vector<ObservedVehicle>& world, const EgoObservation& ego,
+                           const Lanes& lanes, const DirectorConfig& cfg) {
+  const int dir = sign(slot.direction);
+  const double t = std::max(time_left_s, 0.0);
+  const SpeedPlan plan =
+      plan_speed(actor.speed_mps, slot.speed_mps, t, dir * (slot.s_m - actor.s_m), transport_band(slot, cfg), kPlanRate_mps2);
+  TransportCommand c;
+  c.position_error_m = plan.shortfall_m;
+  c.speed_error_mps = actor.speed_mps - slot.speed_mps;
+  const double target = t <= plan.final_change_s + dt_s ? slot.speed_mps : plan.cruise_mps;
+  const double from = previous_cmd_mps >= 0.0 ? previous_cmd_mps : actor.speed_mps;
+  const double step = kCommandRate_mps2 * dt_s;
+  c.speed_mps = std::max(0.0, std::clamp(target, from - step, from + step));
+  // Held up on the way: a neighbouring lane to get past, kept until it is past.
+  c.lane = slot.lane;
+  if (held_up(slot, actor, c.speed_mps, dir * slot.s_m, world, ego)) {
+    c.lane = actor.lane == slot.lane ? passing_lane(slot.lane, lanes, slot.direction) : actor.lane;
+  }
+  return c;
+}
+
+std::vector<ZoneAtStart> zones_of(const PlayConfig& play, Direction ego_direction, int ego_lane, const Lanes& lanes) {
+  std::vector<ZoneAtStart> out;
+  for (const PlayClearZoneConfig& z : play.clear) {
+    const int lane = ego_lane + z.lane_offset;
+    if (lane < 0 || lane >= lanes.of(ego_direction)) continue;
+    const double a = play.trigger2_s_m + sign(ego_direction) * z.from_m;
+    const double b = play.trigger2_s_m + sign(ego_direction) * z.to_m;
+    out.push_back({ego_direction, lane, std::min(a, b), std::max(a, b)});
+  }
+  return out;
+}
+
+bool in_zone(const ZoneAtStart& z, int lane, double s_m, double length_m) {
+  return lane == z.lane && s_m + 0.5 * length_m > z.from_s_m && s_m - 0.5 * length_m < z.to_s_m;
+}
+
+std::optional<Clearance> clear_out(const ObservedVehicle& v, const std::vector<ZoneAtStart>& zones, double time_left_s,
+                                   const std::vector<int>& role_lanes, const Lanes& lanes, const DirectorConfig& cfg) {
+  const double t = std::max(time_left_s, 0.0);
+  const double s_then = v.s_m + sign(v.direction) * v.speed_mps * t;
+  const ZoneAtStart* hit = nullptr;
+  for (const ZoneAtStart& z : zones) {
+    if (z.direction == v.direction && (in_zone(z, v.lane, s_then, v.length_m) || in_zone(z, v.target_lane, s_then, v.length_m))) {
+      hit = &z;
+      break;
+    }
+  }
+  if (hit == nullptr) return std::nullopt;
+  // A neighbouring lane that no zone and no role needs.
+  auto free_lane = [&](int lane) {
+    if (lane < 0 || lane >= lanes.of(v.direction)) return false;
+    for (const ZoneAtStart& z : zones) {
+      if (z.lane == lane && z.direction == v.direction) return false;
+    }
+    return std::find(role_lanes.begin(), role_lanes.end(), lane) == role_lanes.end();
+  };
+  for (int lane : {v.lane - 1, v.lane + 1}) {  // the right one first
+    if (free_lane(lane)) return Clearance{v.speed_mps, lane};
+  }
+  if (t <= 0.0) return std::nullopt;
+  // Ahead of the zone or behind it, whichever needs the smaller change of speed.
+  const int dir = sign(v.direction);
+  const double front_p = dir > 0 ? hit->to_s_m : -hit->from_s_m;
+  const double rear_p = dir > 0 ? hit->from_s_m : -hit->to_s_m;
+  const double p = dir * v.s_m;
+  const double ahead = (front_p + 0.5 * v.length_m + kZoneMargin_m - p) / t;
+  const double behind = (rear_p - 0.5 * v.length_m - kZoneMargin_m - p) / t;
+  const double low = std::max(0.0, std::max(cfg.min_speed_mps, v.speed_mps - cfg.max_speed_offset_mps));
+  const double high = v.speed_mps + cfg.max_speed_offset_mps;
+  std::optional<Clearance> best;
+  for (double speed : {ahead, behind}) {
+    if (speed < low || speed > high) continue;
+    if (!best || std::abs(speed - v.speed_mps) < std::abs(best->speed_mps - v.speed_mps)) best = Clearance{speed, v.lane};
+  }
+  return best;
+}
+
+}  // namespace entourage::director

@@ -1,0 +1,64 @@
+#pragma once
+// Transportation (paper IV): moving actors to their start positions by the estimated start time,
+// with the behaviour of everyday drivers. The director only sets what the actor's own driver
+// model aims for (traffic/actor_control.hpp); the model keeps it safe and smooth.
+//
+// Speed: each step the actor's way to the slot is planned again (stage.hpp, plan_speed): change
+// to a cruise speed, cruise, change to the slot's speed just in time, at kPlanRate. The actor is
+// given the cruise speed as its desired speed, then the slot's speed once the final change is
+// due; the desired speed moves by at most kCommandRate per second, so the driver model eases into
+// it instead of jumping (the plan's rate is lower than that, for the driver's lag).
+//
+// Lane: the slot's lane, except that an actor that must get past a slower vehicle in that lane
+// (or past the ego) first takes a neighbouring lane.
+//
+// Clear zones: a vehicle that would be inside a zone at the start (at its present speed) is asked
+// to leave: to a neighbouring lane that is no zone's, or, on one lane, to be ahead of the zone or
+// behind it at the start by a speed within the band around its own.
+
+#include <optional>
+#include <vector>
+
+#include "director/core/stage.hpp"
+#include "traffic/actor_control.hpp"
+
+namespace entourage::director {
+
+// How fast the desired speed given to an actor may change.
+inline constexpr double kCommandRate_mps2 = 1.0;
+// The rate of speed changes the transport plans with.
+inline constexpr double kPlanRate_mps2 = 0.7;
+
+struct TransportCommand {
+  double speed_mps = 0.0;     // desired speed for the actor
+  int lane = -1;              // lane to reach
+  double position_error_m = 0.0;  // where the plan brings it at the start: > 0 behind the slot
+  double speed_error_mps = 0.0;   // actor's speed - the slot's speed
+};
+
+// `previous_cmd_mps`: the desired speed given at the previous step (< 0: none yet).
+TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, double time_left_s, double previous_cmd_mps,
+                           double dt_s, const std::vector<ObservedVehicle>& world, const EgoObservation& ego,
+                           const Lanes& lanes, const DirectorConfig& cfg);
+
+// A zone at the handover, in road s, in one lane of the ego's direction.
+struct ZoneAtStart {
+  Direction direction = Direction::kForward;
+  int lane = 0;
+  double from_s_m = 0.0;  // lower s
+  double to_s_m = 0.0;    // higher s
+};
+std::vector<ZoneAtStart> zones_of(const PlayConfig& play, Direction ego_direction, int ego_lane, const Lanes& lanes);
+
+// Does a vehicle of length `length_m` with its centre at `s_m` in `lane` overlap a zone?
+bool in_zone(const ZoneAtStart& z, int lane, double s_m, double length_m);
+
+// What a vehicle that would stand in a zone at the start is asked to do, if anything can help.
+struct Clearance {
+  double speed_mps = 0.0;
+  int lane = -1;
+};
+std::optional<Clearance> clear_out(const ObservedVehicle& v, const std::vector<ZoneAtStart>& zones, double time_left_s,
+                                   const std::vector<int>& role_lanes, const Lanes& lanes, const DirectorConfig& cfg);
+
+}  // namespace entourage::director

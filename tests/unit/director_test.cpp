@@ -1,0 +1,274 @@
+// The event director's parts: start-time estimation, casting as an assignment, where new
+// vehicles are created, transport towards a slot, the script, and a play's phases.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "core_test_util.hpp"
+#include "director/core/assignment.hpp"
+#include "director/core/casting.hpp"
+#include "director/core/director_core.hpp"
+#include "director/core/script.hpp"
+#include "director/core/start_time.hpp"
+#include "director/core/transport.hpp"
+
+namespace entourage::director {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+ObservedVehicle vehicle(VehicleId id, double s, double speed, int lane = 0, Direction dir = Direction::kForward) {
+  ObservedVehicle v;
+  v.id = id;
+  v.direction = dir;
+  v.lane = v.target_lane = lane;
+  v.s_m = s;
+  v.speed_mps = speed;
+  v.length_m = 4.5;
+  return v;
+}
+
+// --- Start-time estimation
+
+TEST(StartTime, AtConstantSpeedItIsDistanceOverSpeed) {
+  StartTimeEstimator e;
+  for (int i = 0; i < 50; ++i) e.observe(25.0, 0.0, 0.1);
+  const Prediction p = e.predict(1000.0);
+  EXPECT_NEAR(p.time_s, 40.0, 0.01);
+  EXPECT_NEAR(p.speed_mps, 25.0, 1e-9);
+}
+
+TEST(StartTime, ADriverWhoKeepsAcceleratingAsExpectedArrivesWhenPredicted) {
+  // The model's own case: acceleration a fading out over tau. Simulate it and compare.
+  const StartTimeParams params{5.0, 2.0, 1.0, 3600.0};
+  StartTimeEstimator e(params);
+  for (int i = 0; i < 100; ++i) e.observe(20.0, 1.0, 0.1);  // the filter has settled on 1 m/s^2
+  const Prediction p = e.predict(800.0);
+  double s = 0.0, t = 0.0;
+  const double dt = 0.001;
+  while (s < 800.0) {
+    s += dt * (20.0 + 1.0 * 5.0 * (1.0 - std::exp(-t / 5.0)));
+    t += dt;
+  }
+  EXPECT_NEAR(p.time_s, t, 0.05);
+  EXPECT_LT(p.time_s, 800.0 / 20.0);  // earlier than at the present speed
+  EXPECT_NEAR(p.speed_mps, 25.0, 0.1);  // 20 + a tau
+}
+
+TEST(StartTime, ABrakingDriverMovesTheEstimateLaterAndAStandingOneMakesItUnknown) {
+  StartTimeEstimator e;
+  for (int i = 0; i < 50; ++i) e.observe(25.0, 0.0, 0.1);
+  const double before = e.predict(1000.0).time_s;
+  for (int i = 0; i < 20; ++i) e.observe(25.0 - 0.3 * i, -3.0, 0.1);
+  EXPECT_GT(e.predict(1000.0).time_s, before + 5.0);
+  StartTimeEstimator stopped(StartTimeParams{5.0, 2.0, 0.0, 3600.0});
+  stopped.observe(0.0, 0.0, 0.1);
+  EXPECT_LT(stopped.predict(100.0).time_s, 0.0);
+}
+
+// --- Casting
+
+TEST(Assignment, FindsTheLeastTotalCostWhereFirstComeWouldNot) {
+  // Greedy (role 0 first takes its cheapest, vehicle 0) pays 1 + 100; the optimum pays 2 + 1.
+  const std::vector<std::vector<double>> cost = {{1.0, 2.0}, {1.0, 100.0}};
+  const std::vector<int> a = assign_roles(cost, {50.0, 50.0});
+  EXPECT_EQ(a[0], 1);
+  EXPECT_EQ(a[1], 0);
+}
+
+TEST(Assignment, LeavesARoleUnassignedWhenThatIsCheaperOrNothingFits) {
+  EXPECT_EQ(assign_roles({{30.0}}, {10.0})[0], -1);
+  EXPECT_EQ(assign_roles({{kInf, 3.0}}, {10.0})[0], 1);
+  EXPECT_EQ(assign_roles({{kInf}}, {10.0})[0], -1);
+  const std::vector<int> two = assign_roles({{1.0}, {1.0}}, {10.0, 10.0});  // one vehicle, two roles
+  EXPECT_EQ((two[0] == 0) + (two[1] == 0), 1);
+}
+
+PlayConfig lead_play() {
+  PlayConfig p;
+  p.id = 1;
+  p.name = "lead";
+  p.trigger1_s_m = 2000.0;
+  p.trigger2_s_m = 3000.0;
+  PlayRoleConfig lead;
+  lead.name = "lead";
+  lead.ahead_m = 40.0;
+  lead.speed_mps = 0.0;  // the ego's speed
+  p.roles = {lead};
+  return p;
+}
+
+TEST(Casting, AVehicleThatCannotReachTheSlotInTimeOrMustPassTheEgoOnOneLaneCannotPlay) {
+  const PlayConfig play = lead_play();
+  DirectorConfig cfg;
+  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
+  const Slot slot = slots_of(play, Direction::kForward, 0, 25.0, Lanes{1, 1})[0];
+  EXPECT_DOUBLE_EQ(slot.s_m, 3040.0);
+  std::vector<ObservedVehicle> world = {vehicle(1, 2200.0, 24.0), vehicle(3, 1900.0, 30.0)};
+  const CastingSituation at{world, ego, 40.0, 3000.0, Lanes{1, 1}};
+  // Vehicle 1: 840 m in 40 s is 21 m/s on average, ending at 25: it must cruise below 21 (its
+  // cost is that change of speed from its 24).
+  const double cost = casting_cost(slot, play.roles[0], world[0], at, cfg);
+  EXPECT_GT(cost, 3.0);
+  EXPECT_LT(cost, 5.0);
+  // A vehicle just behind the slot would have to average 3.5 m/s: outside the band.
+  EXPECT_EQ(casting_cost(slot, play.roles[0], vehicle(2, 2900.0, 25.0), at, cfg), kInf);
+  // Vehicle 3 is behind the ego and would have to pass it: actors do not overtake on one lane.
+  EXPECT_EQ(casting_cost(slot, play.roles[0], world[1], at, cfg), kInf);
+  // With two lanes it can, at the cost of the lane changes.
+  const CastingSituation two{world, ego, 40.0, 3000.0, Lanes{2, 0}};
+  EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], world[1], two, cfg)));
+  // A vehicle between vehicle 1 and the slot on one lane blocks it.
+  world.push_back(vehicle(4, 2500.0, 22.0));
+  const CastingSituation blocked{world, ego, 40.0, 3000.0, Lanes{1, 1}};
+  EXPECT_EQ(casting_cost(slot, play.roles[0], world[0], blocked, cfg), kInf);
+}
+
+TEST(Casting, NewVehiclesAreCreatedOutOfSightWithASafeGap) {
+  const PlayConfig play = lead_play();
+  DirectorConfig cfg;
+  ScenarioConfig sc = testing::road_scenario(2, 0);
+  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
+  const WindowBounds w = WindowBounds::around(ego.s_m, sc.window);
+  const Slot slot = slots_of(play, Direction::kForward, 0, 25.0, Lanes{2, 0})[0];
+  for (double t : {10.0, 20.0, 30.0, 40.0, 60.0}) {
+    std::vector<ObservedVehicle> world;
+    const CastingSituation at{world, ego, t, 3000.0, Lanes{2, 0}};
+    const auto place = hidden_placement(slot, 4.5, at, w, cfg);
+    if (!place) continue;
+    EXPECT_TRUE(place->s_m >= w.inner_front_m + cfg.hidden_margin_m || place->s_m <= w.inner_rear_m - cfg.hidden_margin_m)
+        << "created at " << place->s_m << " with " << t << " s to go";
+    EXPECT_TRUE(transport_band(slot, cfg).contains(place->speed_mps));
+  }
+  // 30 s to go: the ideal place (750 m behind the slot) is in view; the nearest hidden one ahead,
+  // 50 m beyond the inner region, needs 19.7 m/s, within the band.
+  std::vector<ObservedVehicle> world;
+  const CastingSituation at{world, ego, 30.0, 3000.0, Lanes{2, 0}};
+  ASSERT_TRUE(hidden_placement(slot, 4.5, at, w, cfg).has_value());
+  const auto free_place = *hidden_placement(slot, 4.5, at, w, cfg);
+  EXPECT_DOUBLE_EQ(free_place.s_m, w.inner_front_m + cfg.hidden_margin_m);
+  // Occupied there: it moves on to a free place.
+  world = {vehicle(9, free_place.s_m + 5.0, 25.0)};
+  const CastingSituation busy{world, ego, 30.0, 3000.0, Lanes{2, 0}};
+  const auto moved = hidden_placement(slot, 4.5, busy, w, cfg);
+  ASSERT_TRUE(moved.has_value());
+  EXPECT_GT(std::abs(moved->s_m - world[0].s_m), 4.5 + 5.0 + 1.5 * 25.0 - 1e-9);
+}
+
+// --- Transport
+
+TEST(Transport, AnActorTrackingItsCommandReachesTheSlotWithinAMetreAndTheSlotSpeed) {
+  const PlayConfig play = lead_play();
+  DirectorConfig cfg;
+  const Slot slot = slots_of(play, Direction::kForward, 0, 25.0, Lanes{2, 0})[0];
+  // 840 m in 40 s, from 20 m/s to the ego's 25: cruise near 20, speed up at the end.
+  ObservedVehicle actor = vehicle(1, 2200.0, 20.0);
+  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
+  const double dt = 0.1;
+  double cmd = -1.0;
+  double max_accel = 0.0;
+  for (double t_left = 40.0; t_left > 0.0; t_left -= dt) {
+    const TransportCommand c = transport(slot, actor, t_left, cmd, dt, {}, ego, Lanes{2, 0}, cfg);
+    cmd = c.speed_mps;
+    // A driver reaching its desired speed with a 2 s lag, at most 1.5 m/s^2.
+    const double a = std::clamp((cmd - actor.speed_mps) / 2.0, -1.5, 1.5);
+    max_accel = std::max(max_accel, std::abs(a));
+    actor.speed_mps += a * dt;
+    actor.s_m += actor.speed_mps * dt;
+  }
+  EXPECT_NEAR(actor.s_m, slot.s_m, 3.0);
+  EXPECT_NEAR(actor.speed_mps, slot.speed_mps, 1.0);
+  EXPECT_LE(max_accel, 1.0 + 1e-9);
+  // Too far ahead and too fast to make it: the plan says by how much it will miss.
+  const TransportCommand miss = transport(slot, vehicle(2, 2300.0, 30.0), 40.0, -1.0, dt, {}, ego, Lanes{2, 0}, cfg);
+  EXPECT_LT(miss.position_error_m, -20.0);
+}
+
+TEST(Transport, AVehicleThatWouldStandInAClearZoneIsSentToTheNextLaneOrOutOfTheZone) {
+  PlayConfig play = lead_play();
+  play.clear = {{0, 5.0, 40.0}};
+  DirectorConfig cfg;
+  // At 25 m/s for 40 s, vehicle 1 ends 20 m ahead of the ego's handover position: in the zone.
+  const ObservedVehicle v = vehicle(1, 2020.0, 25.0);
+  const auto two = clear_out(v, zones_of(play, Direction::kForward, 0, Lanes{2, 0}), 40.0, {0}, Lanes{2, 0}, cfg);
+  ASSERT_TRUE(two.has_value());
+  EXPECT_EQ(two->lane, 1);
+  const auto one = clear_out(v, zones_of(play, Direction::kForward, 0, Lanes{1, 1}), 40.0, {0}, Lanes{1, 1}, cfg);
+  ASSERT_TRUE(one.has_value());
+  EXPECT_EQ(one->lane, 0);
+  const double s_then = v.s_m + one->speed_mps * 40.0;
+  EXPECT_TRUE(s_then > 3040.0 + 2.25 || s_then < 3005.0 - 2.25) << s_then;
+  EXPECT_FALSE(clear_out(vehicle(2, 2500.0, 25.0), zones_of(play, Direction::kForward, 0, Lanes{2, 0}), 40.0, {0},
+                         Lanes{2, 0}, cfg)
+                   .has_value());
+}
+
+// --- Script
+
+TEST(Script, ActionsOfARoleRunInOrderWhenTheirConditionsHold) {
+  PlayConfig play = lead_play();
+  PlayActionConfig brake;
+  brake.role = 0;
+  brake.at_s = 2.0;
+  brake.kind = PlayActionKind::kSpeed;
+  brake.speed_mps = 0.0;
+  brake.rate_mps2 = 6.0;
+  PlayActionConfig blink;
+  blink.role = 0;
+  blink.kind = PlayActionKind::kIndicator;
+  blink.indicator = 2;
+  play.actions = {brake, blink};
+  Script script(play);
+  const EgoObservation ego = testing::ego_at(0, 3000.0, 25.0);
+  const ObservedVehicle lead = vehicle(1, 3040.0, 25.0);
+  std::vector<ActorControl> controls(1);
+  controls[0].speed_mps = 25.0;
+  EXPECT_EQ(script.step(1.0, ego, {&lead}, controls, 2), 0U);  // not yet: at 2 s; the indicator waits its turn
+  EXPECT_EQ(controls[0].indicator, 0);
+  EXPECT_EQ(script.step(2.0, ego, {&lead}, controls, 2), 2U);
+  EXPECT_DOUBLE_EQ(controls[0].speed_mps, 0.0);
+  EXPECT_DOUBLE_EQ(controls[0].decel_mps2, 6.0);
+  EXPECT_EQ(controls[0].indicator, 2);
+}
+
+TEST(Script, TimeToCollisionIsTheGapOverTheClosingSpeed) {
+  const EgoObservation ego = testing::ego_at(0, 1000.0, 30.0);
+  EXPECT_NEAR(time_to_collision_s(ego, vehicle(1, 1050.0, 20.0)), (50.0 - 4.55) / 10.0, 1e-9);
+  EXPECT_EQ(time_to_collision_s(ego, vehicle(1, 1050.0, 35.0)), kInf);
+  // Oncoming: closing at the sum of the speeds.
+  EXPECT_NEAR(time_to_collision_s(ego, vehicle(2, 1300.0, 20.0, 0, Direction::kBackward)), (300.0 - 4.55) / 50.0, 1e-9);
+}
+
+// --- Phases of a play
+
+TEST(PlayPhases, WaitingPreparingThenFailedWithTheReasonWhenNoActorCouldBeCast) {
+  ScenarioConfig sc = testing::minimal_scenario();
+  PlayConfig play = lead_play();
+  play.roles[0].type_index = 0;
+  sc.plays = {play};
+  DirectorCore core(sc, 1);
+  DirectorInput in;
+  in.ego = testing::ego_at(0, 1000.0, 25.0);
+  DirectorOutput out = core.step(in);
+  ASSERT_EQ(out.reports.size(), 1U);
+  EXPECT_EQ(out.reports[0].phase, PlayPhase::kWaiting);
+  in.step = 1;
+  in.ego = testing::ego_at(1, 1002.5, 25.0);
+  EXPECT_TRUE(core.step(in).reports.empty());  // nothing changed
+  in.step = 2;
+  in.ego = testing::ego_at(2, 2000.0, 25.0);
+  out = core.step(in);
+  ASSERT_FALSE(out.reports.empty());
+  EXPECT_EQ(out.reports.back().phase, PlayPhase::kPreparing);
+  EXPECT_NEAR(out.reports.back().estimated_start_time_s, 0.2 + 40.0, 0.01);
+  in.step = 3;
+  in.ego = testing::ego_at(3, 3000.5, 25.0);
+  out = core.step(in);
+  ASSERT_EQ(out.reports.size(), 1U);
+  EXPECT_EQ(out.reports[0].phase, PlayPhase::kFailed);
+  EXPECT_NE(out.reports[0].detail.find("lead: no actor"), std::string::npos) << out.reports[0].detail;
+}
+
+}  // namespace
+}  // namespace entourage::director
