@@ -141,9 +141,18 @@ TEST(EgoCore, KnowsWhenTheRoadEnds) {
   EXPECT_TRUE(core.at_road_end());
 }
 
+PlayConfig play(std::uint32_t id, const std::string& name, double trigger1_s_m, double trigger2_s_m) {
+  PlayConfig p;
+  p.id = id;
+  p.name = name;
+  p.trigger1_s_m = trigger1_s_m;
+  p.trigger2_s_m = trigger2_s_m;
+  return p;
+}
+
 TEST(DirectorCore, ReportsEveryPlayFirstThenItsTriggerPoints) {
   ScenarioConfig sc = minimal_scenario();
-  sc.plays = {{1, "brake", 2000.0, 2600.0}, {2, "cut-in", 5000.0, 5500.0}};
+  sc.plays = {play(1, "brake", 2000.0, 2600.0), play(2, "cut-in", 5000.0, 5500.0)};
   director::DirectorCore core(sc);
   EgoObservation ego = testing::ego_at(0, 1000.0, 30.0);
   auto r = core.step(ego);
