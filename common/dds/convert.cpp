@@ -33,7 +33,7 @@ std::optional<std::string> check_motion(double speed, double accel, const Sample
   return std::nullopt;
 }
 
-// The control of an actor, in the fields a handoff's ActorControlRecord holds.
+// The control of an actor, in the fields ActorCommand and ActorControlRecord share.
 template <class M>
 ActorControl control_of(const M& m) {
   ActorControl c;
@@ -74,7 +74,7 @@ std::optional<std::string> check_control_mode(int mode) {
   return std::nullopt;
 }
 
-// The checks an actor's control carried by a handoff passes.
+// The checks an actor's control passes, in a command or carried by a handoff.
 template <class M>
 std::optional<std::string> check_control(const M& m, const SampleLimits& l) {
   if (!all_finite({m.speed_mps(), m.accel_mps2(), m.decel_mps2(), m.max_jerk_mps3(), m.lane_change_duration_s()})) {
@@ -302,6 +302,23 @@ msg::Handoff to_msg(const Handoff& h, double time_s, const Road& road) {
   return m;
 }
 
+ActorCommand from_msg(const msg::ActorCommand& m) {
+  ActorCommand c;
+  c.vehicle = m.vehicle_id();
+  c.step = m.step();
+  c.control = control_of(m);
+  return c;
+}
+
+msg::ActorCommand to_msg(const ActorCommand& c, double time_s) {
+  msg::ActorCommand m;
+  m.vehicle_id(c.vehicle);
+  m.step(c.step);
+  m.time_s(time_s);
+  set_control(m, c.control);
+  return m;
+}
+
 msg::StepDone make_step_done(ServiceId service, Step step, const TopicCounts& written, std::uint32_t owned) {
   msg::StepDone m;
   m.service(service.code());
@@ -310,6 +327,7 @@ msg::StepDone make_step_done(ServiceId service, Step step, const TopicCounts& wr
   m.vehicle_states(written[static_cast<std::size_t>(Topic::kVehicleState)]);
   m.handoffs(written[static_cast<std::size_t>(Topic::kHandoff)]);
   m.play_status(written[static_cast<std::size_t>(Topic::kPlayStatus)]);
+  m.actor_commands(written[static_cast<std::size_t>(Topic::kActorCommand)]);
   m.owned_vehicles(owned);
   return m;
 }
@@ -320,6 +338,7 @@ TopicCounts counts_of(const msg::StepDone& m) {
   c[static_cast<std::size_t>(Topic::kVehicleState)] = m.vehicle_states();
   c[static_cast<std::size_t>(Topic::kHandoff)] = m.handoffs();
   c[static_cast<std::size_t>(Topic::kPlayStatus)] = m.play_status();
+  c[static_cast<std::size_t>(Topic::kActorCommand)] = m.actor_commands();
   return c;
 }
 
@@ -375,6 +394,12 @@ std::optional<std::string> check(const msg::Handoff& m, const SampleLimits& limi
   }
   if (auto e = check_control(m.control(), limits)) return e;
   return std::nullopt;
+}
+
+std::optional<std::string> check(const msg::ActorCommand& m, const SampleLimits& limits) {
+  if (!std::isfinite(m.time_s())) return "a value is not finite";
+  if (m.vehicle_id() == kEgoVehicleId) return "vehicle id 0 is the ego, which the director cannot command";
+  return check_control(m, limits);
 }
 
 }  // namespace entourage::dds

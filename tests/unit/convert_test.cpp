@@ -236,12 +236,88 @@ TEST(Convert, VehicleStateCarriesTheControlMode) {
   EXPECT_NE(check(bad, limits())->find("control mode 4"), std::string::npos);
 }
 
+TEST(Convert, ActorCommandRoundTrip) {
+  ActorCommand c;
+  c.vehicle = 77;
+  c.step = 120;
+  c.control = sample_control();
+  const msg::ActorCommand m = to_msg(c, 12.0);
+  EXPECT_EQ(m.vehicle_id(), 77U);
+  EXPECT_EQ(m.step(), 120U);
+  EXPECT_EQ(m.time_s(), 12.0);
+  EXPECT_FALSE(check(m, limits()).has_value());
+  const ActorCommand back = from_msg(m);
+  EXPECT_EQ(back.vehicle, 77U);
+  EXPECT_EQ(back.step, 120U);
+  expect_same_control(back.control, c.control);
+}
+
+TEST(Convert, BadActorCommandsAreRefusedWithAReason) {
+  ActorCommand c;
+  c.vehicle = 77;
+  c.step = 120;
+  c.control = sample_control();
+  const msg::ActorCommand good = to_msg(c, 12.0);
+  auto reason = [](const msg::ActorCommand& m) { return check(m, limits()).value_or("accepted"); };
+  msg::ActorCommand m = good;
+  m.accel_mps2(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_NE(reason(m).find("not finite"), std::string::npos);
+  m = good;
+  m.time_s(std::numeric_limits<double>::infinity());
+  EXPECT_NE(reason(m).find("not finite"), std::string::npos);
+  m = good;
+  m.mode(4);
+  EXPECT_EQ(reason(m), "unknown control mode 4");
+  m = good;
+  m.indicator(3);
+  EXPECT_NE(reason(m).find("indicator 3"), std::string::npos);
+  m = good;
+  m.accel_mps2(0.0);
+  EXPECT_NE(reason(m).find("(0, 15] m/s^2"), std::string::npos);
+  m = good;
+  m.decel_mps2(15.5);
+  EXPECT_NE(reason(m).find("(0, 15] m/s^2"), std::string::npos);
+  m.decel_mps2(15.0);
+  EXPECT_EQ(reason(m), "accepted");
+  m = good;
+  m.mode(static_cast<uint8_t>(ControlMode::kReleasing));  // the rates matter only under control
+  m.accel_mps2(0.0);
+  EXPECT_EQ(reason(m), "accepted");
+  m.max_jerk_mps3(0.0);
+  EXPECT_NE(reason(m).find("jerk"), std::string::npos);
+  m = good;
+  m.speed_mps(-1.0);
+  EXPECT_NE(reason(m).find("speed"), std::string::npos);
+  m.speed_mps(100.0);
+  EXPECT_NE(reason(m).find("speed"), std::string::npos);
+  m.speed_mps(99.9);
+  EXPECT_EQ(reason(m), "accepted");
+  m = good;
+  m.lane(-2);
+  EXPECT_NE(reason(m).find("lane -2"), std::string::npos);
+  m.lane(16);
+  EXPECT_NE(reason(m).find("lane 16"), std::string::npos);
+  m.lane(-1);
+  EXPECT_EQ(reason(m), "accepted");
+  m.lane(15);
+  EXPECT_EQ(reason(m), "accepted");
+  m = good;
+  m.lane_change_duration_s(-0.5);
+  EXPECT_NE(reason(m).find("duration"), std::string::npos);
+  m = good;
+  m.vehicle_id(kEgoVehicleId);
+  EXPECT_NE(reason(m).find("ego"), std::string::npos);
+}
+
 TEST(Convert, StepDoneCountsRoundTrip) {
   TopicCounts c{};
   c[static_cast<std::size_t>(Topic::kVehicleState)] = 12;
   c[static_cast<std::size_t>(Topic::kHandoff)] = 3;
+  c[static_cast<std::size_t>(Topic::kPlayStatus)] = 1;
+  c[static_cast<std::size_t>(Topic::kActorCommand)] = 2;
   const msg::StepDone m = make_step_done(ServiceId{Role::kMeso, 1}, 99, c, 40);
   EXPECT_EQ(counts_of(m), c);
+  EXPECT_EQ(m.actor_commands(), 2U);
   EXPECT_EQ(m.owned_vehicles(), 40U);
   EXPECT_EQ(m.step(), 99U);
 }
