@@ -154,7 +154,16 @@ TEST(Recording, CsvExportRoundTrips) {
   std::getline(v, header);
   EXPECT_EQ(header,
             "step,time_s,id,owner,region,direction,lane,s_m,d_m,x_m,y_m,heading_rad,speed_mps,accel_mps2,length_m,width_m,"
-            "type,target_lane");
+            "type,target_lane,control");
+  std::ifstream c(dir + "/commands.csv");
+  std::string command_header;
+  std::string command_row;
+  std::getline(c, command_header);
+  std::getline(c, command_row);
+  EXPECT_EQ(command_header,
+            "step,time_s,vehicle_id,play_id,mode,speed_mps,accel_mps2,decel_mps2,max_jerk_mps3,lane,force_lane,"
+            "lane_change_duration_s,indicator");
+  EXPECT_EQ(command_row, "1,0.1,3,4,controlled,25,1.5,6,2,1,1,2.5,1");
   const auto back = read_csv(dir, &error);
   ASSERT_TRUE(back) << error;
   ASSERT_EQ(back->vehicles.size(), 6U);
@@ -162,7 +171,25 @@ TEST(Recording, CsvExportRoundTrips) {
   EXPECT_EQ(back->vehicles[0].owner, "meso");
   EXPECT_EQ(back->vehicles[0].region, "outer_rear");
   EXPECT_EQ(back->vehicles[0].type, "car");
+  EXPECT_EQ(back->vehicles[0].control, "autonomous");
+  EXPECT_EQ(back->vehicles[5].id, 7U);
+  EXPECT_EQ(back->vehicles[5].control, "controlled");
   EXPECT_EQ(back->ego.size(), 3U);
+  ASSERT_EQ(back->commands.size(), 2U);
+  const CommandRow& cmd = back->commands[1];
+  EXPECT_EQ(cmd.step, 1U);
+  EXPECT_EQ(cmd.time_s, 0.1);
+  EXPECT_EQ(cmd.vehicle_id, 7U);
+  EXPECT_EQ(cmd.play_id, 4U);
+  EXPECT_EQ(cmd.mode, "controlled");
+  EXPECT_EQ(cmd.speed_mps, 20.0);
+  EXPECT_EQ(cmd.accel_mps2, 1.5);
+  EXPECT_EQ(cmd.decel_mps2, 6.0);
+  EXPECT_EQ(cmd.max_jerk_mps3, 2.0);
+  EXPECT_EQ(cmd.lane, 1);
+  EXPECT_TRUE(cmd.force_lane);
+  EXPECT_EQ(cmd.lane_change_duration_s, 2.5);
+  EXPECT_EQ(cmd.indicator, 1U);
 }
 
 CheckResult find(const std::vector<CheckResult>& all, const std::string& name) {
