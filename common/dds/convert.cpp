@@ -33,6 +33,74 @@ std::optional<std::string> check_motion(double speed, double accel, const Sample
   return std::nullopt;
 }
 
+// The control of an actor, in the fields ActorCommand and ActorControlRecord share.
+template <class M>
+ActorControl control_of(const M& m) {
+  ActorControl c;
+  c.mode = static_cast<ControlMode>(m.mode());
+  c.play_id = m.play_id();
+  c.speed_mps = m.speed_mps();
+  c.accel_mps2 = m.accel_mps2();
+  c.decel_mps2 = m.decel_mps2();
+  c.max_jerk_mps3 = m.max_jerk_mps3();
+  c.lane = m.lane();
+  c.force_lane = m.force_lane();
+  c.lane_change_duration_s = m.lane_change_duration_s();
+  c.indicator = m.indicator();
+  return c;
+}
+
+template <class M>
+void set_control(M& m, const ActorControl& c) {
+  m.mode(static_cast<uint8_t>(c.mode));
+  m.play_id(c.play_id);
+  m.speed_mps(c.speed_mps);
+  m.accel_mps2(c.accel_mps2);
+  m.decel_mps2(c.decel_mps2);
+  m.max_jerk_mps3(c.max_jerk_mps3);
+  m.lane(static_cast<int16_t>(c.lane));
+  m.force_lane(c.force_lane);
+  m.lane_change_duration_s(c.lane_change_duration_s);
+  m.indicator(c.indicator);
+}
+
+constexpr int kMaxControlMode = static_cast<int>(ControlMode::kReleasing);
+constexpr int kMaxIndicator = 2;               // 0 off, 1 left, 2 right
+constexpr double kMaxControlRate_mps2 = 15.0;  // a controlled actor's acceleration and deceleration
+constexpr int kMaxControlLane = 15;            // lane index in the vehicle's own direction
+
+std::optional<std::string> check_control_mode(int mode) {
+  if (mode > kMaxControlMode) return "unknown control mode " + std::to_string(mode);
+  return std::nullopt;
+}
+
+// The checks an actor's control passes, in a command or carried by a handoff.
+template <class M>
+std::optional<std::string> check_control(const M& m, const SampleLimits& l) {
+  if (!all_finite({m.speed_mps(), m.accel_mps2(), m.decel_mps2(), m.max_jerk_mps3(), m.lane_change_duration_s()})) {
+    return "a control value is not finite";
+  }
+  if (auto e = check_control_mode(m.mode())) return e;
+  if (m.indicator() > kMaxIndicator) return "indicator " + std::to_string(m.indicator()) + " is not 0, 1 or 2";
+  if (m.speed_mps() < 0.0 || m.speed_mps() >= l.max_speed_mps) {
+    return "control speed " + std::to_string(m.speed_mps()) + " m/s out of range";
+  }
+  if (m.lane() < -1 || m.lane() > kMaxControlLane) return "control lane " + std::to_string(m.lane()) + " out of range";
+  if (m.lane_change_duration_s() < 0.0) return "lane change duration must not be negative";
+  const auto mode = static_cast<ControlMode>(m.mode());
+  if (mode == ControlMode::kControlled) {
+    for (double rate : {m.accel_mps2(), m.decel_mps2()}) {
+      if (rate <= 0.0 || rate > kMaxControlRate_mps2) {
+        return "controlled acceleration and deceleration must be in (0, 15] m/s^2, not " + std::to_string(rate);
+      }
+    }
+  }
+  if ((mode == ControlMode::kTransported || mode == ControlMode::kReleasing) && m.max_jerk_mps3() <= 0.0) {
+    return "the jerk limit must be positive";
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 EgoObservation from_msg(const msg::EgoState& m) {
@@ -83,6 +151,7 @@ ObservedVehicle from_msg(const msg::VehicleState& m) {
   v.lane = m.lane();
   v.target_lane = m.target_lane();
   v.type_index = m.type_index();
+  v.control = static_cast<ControlMode>(m.control());
   v.s_m = m.s_m();
   v.d_m = m.d_m();
   v.speed_mps = m.speed_mps();
@@ -102,7 +171,7 @@ msg::VehicleState to_msg(const VehicleReport& r, ServiceId owner, Step step, dou
   m.region(static_cast<uint8_t>(r.region));
   m.type_index(v.type_index);
   m.indicator(static_cast<uint8_t>(v.indicator()));
-  m.control(0);
+  m.control(static_cast<uint8_t>(v.control.mode));
   m.direction(static_cast<int16_t>(sign(v.direction)));
   m.lane(static_cast<int16_t>(v.lane));
   m.target_lane(static_cast<int16_t>(v.target_lane()));
@@ -160,6 +229,7 @@ Handoff from_msg(const msg::Handoff& m) {
   p.rng_state = d.rng_state();
   v.hdm_errors = {d.hdm_w_distance(), d.hdm_w_approach()};
   v.requested_lane = m.requested_lane();
+  v.control = control_of(m.control());
   h.step = m.step();
   h.from = ServiceId::from_code(m.from_service());
   h.to_role = static_cast<Role>(m.to_role());
@@ -228,6 +298,24 @@ msg::Handoff to_msg(const Handoff& h, double time_s, const Road& road) {
   d.hdm_w_distance(v.hdm_errors.w_distance);
   d.hdm_w_approach(v.hdm_errors.w_approach);
   m.requested_lane(static_cast<int16_t>(v.requested_lane));
+  set_control(m.control(), v.control);
+  return m;
+}
+
+ActorCommand from_msg(const msg::ActorCommand& m) {
+  ActorCommand c;
+  c.vehicle = m.vehicle_id();
+  c.step = m.step();
+  c.control = control_of(m);
+  return c;
+}
+
+msg::ActorCommand to_msg(const ActorCommand& c, double time_s) {
+  msg::ActorCommand m;
+  m.vehicle_id(c.vehicle);
+  m.step(c.step);
+  m.time_s(time_s);
+  set_control(m, c.control);
   return m;
 }
 
@@ -239,6 +327,7 @@ msg::StepDone make_step_done(ServiceId service, Step step, const TopicCounts& wr
   m.vehicle_states(written[static_cast<std::size_t>(Topic::kVehicleState)]);
   m.handoffs(written[static_cast<std::size_t>(Topic::kHandoff)]);
   m.play_status(written[static_cast<std::size_t>(Topic::kPlayStatus)]);
+  m.actor_commands(written[static_cast<std::size_t>(Topic::kActorCommand)]);
   m.owned_vehicles(owned);
   return m;
 }
@@ -249,6 +338,7 @@ TopicCounts counts_of(const msg::StepDone& m) {
   c[static_cast<std::size_t>(Topic::kVehicleState)] = m.vehicle_states();
   c[static_cast<std::size_t>(Topic::kHandoff)] = m.handoffs();
   c[static_cast<std::size_t>(Topic::kPlayStatus)] = m.play_status();
+  c[static_cast<std::size_t>(Topic::kActorCommand)] = m.actor_commands();
   return c;
 }
 
@@ -282,6 +372,7 @@ std::optional<std::string> check(const msg::VehicleState& m, const SampleLimits&
   if (auto e = check_motion(m.speed_mps(), m.accel_mps2(), limits)) return e;
   if (m.type_index() >= limits.vehicle_types) return "unknown vehicle type " + std::to_string(m.type_index());
   if (m.length_m() <= 0.0 || m.width_m() <= 0.0) return "length and width must be positive";
+  if (auto e = check_control_mode(m.control())) return e;
   return std::nullopt;
 }
 
@@ -301,7 +392,14 @@ std::optional<std::string> check(const msg::Handoff& m, const SampleLimits& limi
       m.driver().comfort_decel_mps2() <= 0.0) {
     return "driver parameters must be positive";
   }
+  if (auto e = check_control(m.control(), limits)) return e;
   return std::nullopt;
+}
+
+std::optional<std::string> check(const msg::ActorCommand& m, const SampleLimits& limits) {
+  if (!std::isfinite(m.time_s())) return "a value is not finite";
+  if (m.vehicle_id() == kEgoVehicleId) return "vehicle id 0 is the ego, which the director cannot command";
+  return check_control(m, limits);
 }
 
 }  // namespace entourage::dds

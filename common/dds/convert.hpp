@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "entourage_msg/ActorCommand.h"
 #include "entourage_msg/EgoState.h"
 #include "entourage_msg/Handoff.h"
 #include "entourage_msg/PlayStatus.h"
@@ -14,6 +15,7 @@
 #include "dds/step_ledger.hpp"
 #include "road/road.hpp"
 #include "scenario/config.hpp"
+#include "traffic/actor_control.hpp"
 #include "traffic/handoff.hpp"
 #include "traffic/step_io.hpp"
 #include "traffic/world.hpp"
@@ -28,6 +30,9 @@ msg::VehicleState to_msg(const VehicleReport& r, ServiceId owner, Step step, dou
 
 Handoff from_msg(const msg::Handoff& m);
 msg::Handoff to_msg(const Handoff& h, double time_s, const Road& road);
+
+ActorCommand from_msg(const msg::ActorCommand& m);
+msg::ActorCommand to_msg(const ActorCommand& c, double time_s);
 
 msg::StepDone make_step_done(ServiceId service, Step step, const TopicCounts& written, std::uint32_t owned);
 TopicCounts counts_of(const msg::StepDone& m);
@@ -48,5 +53,6 @@ struct SampleLimits {
 std::optional<std::string> check(const msg::EgoState& m, const SampleLimits& limits);
 std::optional<std::string> check(const msg::VehicleState& m, const SampleLimits& limits);
 std::optional<std::string> check(const msg::Handoff& m, const SampleLimits& limits);
+std::optional<std::string> check(const msg::ActorCommand& m, const SampleLimits& limits);
 
 }  // namespace entourage::dds

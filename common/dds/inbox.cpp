@@ -59,6 +59,15 @@ void Inbox::add(const msg::PlayStatus& m) {
   changed_.notify_all();
 }
 
+void Inbox::add(const msg::ActorCommand& m) {
+  const ServiceId from{Role::kDirector, 0};
+  if (from == self_) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  ledger_.on_sample(from, m.step(), Topic::kActorCommand);
+  if (!refuse(check(m, limits_), "actor_command", m.vehicle_id(), m.step())) buckets_[m.step()].commands.push_back(m);
+  changed_.notify_all();
+}
+
 void Inbox::add(const msg::StepDone& m) {
   const ServiceId from = ServiceId::from_code(m.service());
   if (from == self_) return;
@@ -136,6 +145,17 @@ std::vector<msg::Handoff> Inbox::take_handoffs_upto(Step step) {
   return out;
 }
 
+std::vector<msg::ActorCommand> Inbox::take_commands_upto(Step step) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<msg::ActorCommand> out;
+  for (auto it = buckets_.begin(); it != buckets_.end() && it->first <= step; ++it) {
+    auto& c = it->second.commands;
+    out.insert(out.end(), std::make_move_iterator(c.begin()), std::make_move_iterator(c.end()));
+    c.clear();
+  }
+  return out;
+}
+
 void Inbox::forget_bookkeeping_before(Step step) {
   std::lock_guard<std::mutex> lock(mutex_);
   egos_.erase(egos_.begin(), egos_.lower_bound(step));
@@ -147,22 +167,31 @@ std::vector<Step> Inbox::steps_with_samples_before(Step step) const {
   std::vector<Step> out;
   for (auto it = buckets_.begin(); it != buckets_.end() && it->first < step; ++it) {
     const Bucket& b = it->second;
-    if (!b.vehicles.empty() || !b.handoffs.empty() || !b.plays.empty() || !b.done.empty()) out.push_back(it->first);
+    if (!b.vehicles.empty() || !b.handoffs.empty() || !b.plays.empty() || !b.commands.empty() || !b.done.empty()) {
+      out.push_back(it->first);
+    }
   }
   return out;
 }
 
 void Inbox::forget_before(Step step) {
   std::lock_guard<std::mutex> lock(mutex_);
-  // Handoffs are never dropped: a late one is still applied (at the next step).
+  // Handoffs and director commands are never dropped: a late one is still applied (at the next step).
   std::vector<msg::Handoff> keep;
+  std::vector<msg::ActorCommand> keep_commands;
   for (auto it = buckets_.begin(); it != buckets_.end() && it->first < step; ++it) {
     for (auto& h : it->second.handoffs) keep.push_back(std::move(h));
+    for (auto& c : it->second.commands) keep_commands.push_back(std::move(c));
   }
   buckets_.erase(buckets_.begin(), buckets_.lower_bound(step));
   if (!keep.empty()) {
     auto& dst = buckets_[step].handoffs;
     dst.insert(dst.end(), std::make_move_iterator(keep.begin()), std::make_move_iterator(keep.end()));
+  }
+  if (!keep_commands.empty()) {
+    auto& dst = buckets_[step].commands;
+    dst.insert(dst.end(), std::make_move_iterator(keep_commands.begin()),
+               std::make_move_iterator(keep_commands.end()));
   }
   egos_.erase(egos_.begin(), egos_.lower_bound(step));
   ledger_.forget_before(step);

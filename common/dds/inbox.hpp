@@ -24,6 +24,7 @@ struct Bucket {
   std::vector<msg::VehicleState> vehicles;
   std::vector<msg::Handoff> handoffs;
   std::vector<msg::PlayStatus> plays;
+  std::vector<msg::ActorCommand> commands;
   std::vector<msg::StepDone> done;
 };
 
@@ -38,6 +39,7 @@ class Inbox {
   void add(const msg::VehicleState& m);
   void add(const msg::Handoff& m);
   void add(const msg::PlayStatus& m);
+  void add(const msg::ActorCommand& m);
   void add(const msg::StepDone& m);
   void add(const msg::ServiceStatus& m);
 
@@ -66,9 +68,12 @@ class Inbox {
   Bucket take(Step step);
   // Removes and returns every handoff of steps up to and including `step`.
   std::vector<msg::Handoff> take_handoffs_upto(Step step);
+  // Removes and returns every director command of steps up to and including `step`.
+  std::vector<msg::ActorCommand> take_commands_upto(Step step);
   // Steps before `step` that still hold samples (late arrivals after their step was taken).
   std::vector<Step> steps_with_samples_before(Step step) const;
-  // Drops everything (samples, ego states, bookkeeping) of steps before `step`; handoffs are kept.
+  // Drops everything (samples, ego states, bookkeeping) of steps before `step`; handoffs and director
+  // commands are kept (moved to `step`, their messages unchanged) and taken with the next ones.
   void forget_before(Step step);
   // Drops ego states and bookkeeping of steps before `step` but keeps their samples.
   void forget_bookkeeping_before(Step step);

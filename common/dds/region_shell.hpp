@@ -24,7 +24,8 @@
 namespace entourage::dds {
 
 // Gathers the inputs of step k: the ego at k and k-1, every vehicle published for k-1 (by the
-// others, from the inbox; by this service, from what it published), and the handoffs received.
+// others, from the inbox; by this service, from what it published), the handoffs received and the
+// director's commands written at k-1 (with any that arrived too late for their own step).
 inline StepInput gather_inputs(Step k, Inbox& inbox, const std::vector<ObservedVehicle>& own_prev) {
   StepInput in;
   in.step = k;
@@ -32,7 +33,8 @@ inline StepInput gather_inputs(Step k, Inbox& inbox, const std::vector<ObservedV
   if (k > 0) {
     if (auto e = inbox.ego(k - 1)) in.ego_prev = from_msg(*e);
     for (const auto& m : inbox.take_handoffs_upto(k - 1)) in.handoffs.push_back(from_msg(m));
-    const Bucket b = inbox.take(k - 1);  // after the handoffs, which it would take too
+    for (const auto& m : inbox.take_commands_upto(k - 1)) in.commands.push_back(from_msg(m));
+    const Bucket b = inbox.take(k - 1);  // after the handoffs and commands, which it would take too
     in.world_prev.reserve(b.vehicles.size() + own_prev.size());
     for (const auto& m : b.vehicles) in.world_prev.push_back(from_msg(m));
   }
@@ -40,6 +42,11 @@ inline StepInput gather_inputs(Step k, Inbox& inbox, const std::vector<ObservedV
   // Arrival order over DDS is not deterministic; the order a core sees must be.
   std::sort(in.world_prev.begin(), in.world_prev.end(),
             [](const ObservedVehicle& a, const ObservedVehicle& b) { return a.id < b.id; });
+  // By vehicle, then step: a late command comes before a newer one for the same vehicle. Stable, so
+  // that two commands of one step for one vehicle keep the order the director wrote them in.
+  std::stable_sort(in.commands.begin(), in.commands.end(), [](const ActorCommand& a, const ActorCommand& b) {
+    return a.vehicle != b.vehicle ? a.vehicle < b.vehicle : a.step < b.step;
+  });
   return in;
 }
 

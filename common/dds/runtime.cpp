@@ -214,10 +214,12 @@ TopicMask needed_topics(Role role) {
   switch (role) {
     case Role::kEgo: return mask_of(Topic::kVehicleState);
     case Role::kDirector: return world;
-    case Role::kGenerator:
+    case Role::kGenerator: return world | mask_of(Topic::kHandoff);
+    // Every command of step k-1 is here before step k: it is applied at that step boundary.
     case Role::kMicro:
-    case Role::kMeso: return world | mask_of(Topic::kHandoff);
-    case Role::kRecorder: return world | mask_of(Topic::kHandoff) | mask_of(Topic::kPlayStatus);
+    case Role::kMeso: return world | mask_of(Topic::kHandoff) | mask_of(Topic::kActorCommand);
+    case Role::kRecorder:
+      return world | mask_of(Topic::kHandoff) | mask_of(Topic::kPlayStatus) | mask_of(Topic::kActorCommand);
     default: return 0;
   }
 }

@@ -1,5 +1,6 @@
 #include "dds/shell.hpp"
 
+#include "entourage_msg/ActorCommandPubSubTypes.h"
 #include "entourage_msg/EgoStatePubSubTypes.h"
 #include "entourage_msg/HandoffPubSubTypes.h"
 #include "entourage_msg/PlayStatusPubSubTypes.h"
@@ -33,6 +34,10 @@ void subscribe(Node& node, Inbox& inbox, Role role) {
   }
   if (reads(role, Topic::kPlayStatus)) {
     node.reader<msg::PlayStatusPubSubType>(Topic::kPlayStatus, [&inbox](const msg::PlayStatus& m) { inbox.add(m); });
+  }
+  if (reads(role, Topic::kActorCommand)) {
+    node.reader<msg::ActorCommandPubSubType>(Topic::kActorCommand,
+                                             [&inbox](const msg::ActorCommand& m) { inbox.add(m); });
   }
   node.reader<msg::StepDonePubSubType>(Topic::kStepDone, [&inbox](const msg::StepDone& m) { inbox.add(m); });
   node.reader<msg::ServiceStatusPubSubType>(Topic::kServiceStatus,

@@ -12,6 +12,8 @@ constexpr std::array<TopicInfo, kTopicCount> kTopics{{
     {Topic::kServiceStatus, "entourage/service_status", "ServiceStatus", "entourage::msg::ServiceStatus",
      "service_status", false},
     {Topic::kPlayStatus, "entourage/play_status", "PlayStatus", "entourage::msg::PlayStatus", "play_status", true},
+    {Topic::kActorCommand, "entourage/actor_command", "ActorCommand", "entourage::msg::ActorCommand", "actor_command",
+     true},
 }};
 
 // Bit t set: the role writes (or reads) topic t.
@@ -24,7 +26,8 @@ std::uint32_t write_mask(Role r) {
     case Role::kGenerator: return kControl | bit(Topic::kHandoff) | bit(Topic::kVehicleState);  // front zone
     case Role::kMicro:
     case Role::kMeso: return kControl | bit(Topic::kVehicleState) | bit(Topic::kHandoff);
-    case Role::kDirector: return kControl | bit(Topic::kPlayStatus);
+    // The director commands the actors of its plays and hands the vehicles it creates to meso.
+    case Role::kDirector: return kControl | bit(Topic::kPlayStatus) | bit(Topic::kActorCommand) | bit(Topic::kHandoff);
     case Role::kRecorder: return kControl;
     default: return 0;
   }
@@ -37,8 +40,9 @@ std::uint32_t read_mask(Role r) {
     case Role::kGenerator: return kControl | world | bit(Topic::kHandoff);  // vehicles leaving ahead
     case Role::kDirector: return kControl | world;
     case Role::kMicro:
-    case Role::kMeso: return kControl | world | bit(Topic::kHandoff);
-    case Role::kRecorder: return kControl | world | bit(Topic::kHandoff) | bit(Topic::kPlayStatus);
+    case Role::kMeso: return kControl | world | bit(Topic::kHandoff) | bit(Topic::kActorCommand);
+    case Role::kRecorder:
+      return kControl | world | bit(Topic::kHandoff) | bit(Topic::kPlayStatus) | bit(Topic::kActorCommand);
     case Role::kLauncher: return kControl | bit(Topic::kEgoState);
     default: return 0;
   }

@@ -18,8 +18,9 @@ enum class Topic : std::uint8_t {
   kStepDone = 3,
   kServiceStatus = 4,
   kPlayStatus = 5,
+  kActorCommand = 6,
 };
-inline constexpr std::size_t kTopicCount = 6;
+inline constexpr std::size_t kTopicCount = 7;
 
 struct TopicInfo {
   Topic topic;

@@ -13,19 +13,24 @@ const char* const kVehiclesFile = "vehicles.csv";
 const char* const kEgoFile = "ego.csv";
 const char* const kHandoffsFile = "handoffs.csv";
 const char* const kPlaysFile = "plays.csv";
+const char* const kCommandsFile = "commands.csv";
 const char* const kRunFile = "run.csv";
 const char* const kScenarioFile = "scenario.pbtxt";
 
 // New columns go at the end, so that readers of the earlier ones by position still work.
 const csv::Columns kVehicleColumns{"step",  "time_s",      "id",        "owner",      "region",   "direction",
                                    "lane",  "s_m",         "d_m",       "x_m",        "y_m",      "heading_rad",
-                                   "speed_mps", "accel_mps2", "length_m", "width_m",   "type",     "target_lane"};
+                                   "speed_mps", "accel_mps2", "length_m", "width_m",   "type",     "target_lane",
+                                   "control"};
 const csv::Columns kEgoColumns{"step",      "time_s",     "s_m",  "d_m",      "x_m",    "y_m",
                                "heading_rad", "speed_mps", "accel_mps2", "lane", "length_m", "width_m"};
 const csv::Columns kHandoffColumns{"step",    "time_s",    "vehicle_id", "sequence", "from", "to_role",
                                    "to_region", "reason", "lane",       "s_m",      "speed_mps"};
 const csv::Columns kPlayColumns{"step",  "time_s",  "play_id",                "name",
                                 "phase", "ego_s_m", "estimated_start_time_s", "detail"};
+const csv::Columns kCommandColumns{"step",       "time_s",     "vehicle_id",    "play_id", "mode",
+                                   "speed_mps",  "accel_mps2", "decel_mps2",    "max_jerk_mps3", "lane",
+                                   "force_lane", "lane_change_duration_s", "indicator"};
 const csv::Columns kRunColumns{"scenario_name", "scenario_file", "seed",   "mode",
                                "step_s",        "peers",         "undecodable_messages"};
 
@@ -35,6 +40,8 @@ namespace {
 const std::vector<std::string_view> kRegions{"outside", "outer_rear", "inner", "outer_front"};
 const std::vector<std::string_view> kToRoles{"none", "micro", "meso", "director", "other"};
 const std::vector<std::string_view> kReasons{"birth", "initial_fill", "border", "left_window", "director", "unknown"};
+const std::vector<std::string_view> kControlModes{"autonomous", "transported", "controlled", "releasing", "unknown"};
+const std::vector<std::string_view> kFlags{"0", "1"};
 
 std::string in_dir(const std::string& dir, const char* file) { return dir + "/" + file; }
 
@@ -59,7 +66,7 @@ bool write_file(const std::string& path, const csv::Columns& columns, const std:
 void add_vehicle(csv::LineWriter& l, const VehicleRow& x) {
   l.add(x.step).add(x.time_s).add(x.id).add(x.owner).add(x.region).add(x.direction).add(x.lane);
   l.add(x.s_m).add(x.d_m).add(x.x_m).add(x.y_m).add(x.heading_rad).add(x.speed_mps).add(x.accel_mps2);
-  l.add(x.length_m).add(x.width_m).add(x.type).add(x.target_lane);
+  l.add(x.length_m).add(x.width_m).add(x.type).add(x.target_lane).add(x.control);
 }
 
 void add_ego(csv::LineWriter& l, const EgoRow& x) {
@@ -75,6 +82,12 @@ void add_handoff(csv::LineWriter& l, const HandoffRow& x) {
 void add_play(csv::LineWriter& l, const PlayRow& x) {
   l.add(x.step).add(x.time_s).add(x.play_id).add(x.name).add(x.phase).add(x.ego_s_m).add(x.estimated_start_time_s);
   l.add(x.detail);
+}
+
+void add_command(csv::LineWriter& l, const CommandRow& x) {
+  l.add(x.step).add(x.time_s).add(x.vehicle_id).add(x.play_id).add(x.mode).add(x.speed_mps).add(x.accel_mps2);
+  l.add(x.decel_mps2).add(x.max_jerk_mps3).add(x.lane).add(x.force_lane ? "1" : "0").add(x.lane_change_duration_s);
+  l.add(x.indicator);
 }
 
 struct RunRow {
@@ -123,6 +136,7 @@ VehicleRow read_vehicle(csv::Reader& in) {
   r.width_m = in.number();
   r.type = in.text();
   r.target_lane = in.integer();
+  r.control = in.word(kControlModes);
   return r;
 }
 
@@ -172,6 +186,24 @@ PlayRow read_play(csv::Reader& in) {
   return r;
 }
 
+CommandRow read_command(csv::Reader& in) {
+  CommandRow r;
+  r.step = in.u64();
+  r.time_s = in.number();
+  r.vehicle_id = in.u32();
+  r.play_id = in.u32();
+  r.mode = in.word(kControlModes);
+  r.speed_mps = in.number();
+  r.accel_mps2 = in.number();
+  r.decel_mps2 = in.number();
+  r.max_jerk_mps3 = in.number();
+  r.lane = in.integer();
+  r.force_lane = in.word(kFlags) == "1";
+  r.lane_change_duration_s = in.number();
+  r.indicator = in.u32();
+  return r;
+}
+
 template <typename ReadRow>
 auto read_rows(const std::string& path, const csv::Columns& columns, ReadRow read_row) {
   std::vector<decltype(read_row(std::declval<csv::Reader&>()))> rows;
@@ -216,6 +248,7 @@ bool write_csv(const Tables& t, const std::string& dir, std::string* error) {
          write_file(in_dir(dir, kEgoFile), kEgoColumns, t.ego, add_ego, error) &&
          write_file(in_dir(dir, kHandoffsFile), kHandoffColumns, t.handoffs, add_handoff, error) &&
          write_file(in_dir(dir, kPlaysFile), kPlayColumns, t.plays, add_play, error) &&
+         write_file(in_dir(dir, kCommandsFile), kCommandColumns, t.commands, add_command, error) &&
          write_file(in_dir(dir, kRunFile), kRunColumns, run, add_run, error) &&
          write_text(in_dir(dir, kScenarioFile), t.info.scenario_text, error);
 }
@@ -229,6 +262,7 @@ std::optional<Tables> read_csv(const std::string& dir, std::string* error) {
     t.ego = read_rows(in_dir(dir, kEgoFile), kEgoColumns, read_ego);
     t.handoffs = read_rows(in_dir(dir, kHandoffsFile), kHandoffColumns, read_handoff);
     t.plays = read_rows(in_dir(dir, kPlaysFile), kPlayColumns, read_play);
+    t.commands = read_rows(in_dir(dir, kCommandsFile), kCommandColumns, read_command);
     sort_rows(t);
     return t;
   } catch (const csv::CsvError& e) {

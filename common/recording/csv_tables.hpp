@@ -5,6 +5,7 @@
 //   ego.csv         one row per step
 //   handoffs.csv    one row per ownership change
 //   plays.csv       one row per play status report
+//   commands.csv    one row per command of the director to an actor
 //   run.csv         the run's settings, one row
 //   scenario.pbtxt  the scenario the run was made with, as attached to the recording
 // Numbers are written so that they read back as the same doubles: verify prints the same figures
@@ -22,6 +23,7 @@ extern const char* const kVehiclesFile;
 extern const char* const kEgoFile;
 extern const char* const kHandoffsFile;
 extern const char* const kPlaysFile;
+extern const char* const kCommandsFile;
 extern const char* const kRunFile;
 extern const char* const kScenarioFile;
 
@@ -29,6 +31,7 @@ extern const csv::Columns kVehicleColumns;
 extern const csv::Columns kEgoColumns;
 extern const csv::Columns kHandoffColumns;
 extern const csv::Columns kPlayColumns;
+extern const csv::Columns kCommandColumns;
 extern const csv::Columns kRunColumns;
 
 // Writes every file into `dir` (created if need be); false with *error if one cannot be written.

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "dds/topics.hpp"
+#include "entourage_msg/ActorCommandPubSubTypes.h"
 #include "entourage_msg/EgoStatePubSubTypes.h"
 #include "entourage_msg/HandoffPubSubTypes.h"
 #include "entourage_msg/PlayStatusPubSubTypes.h"
@@ -27,6 +28,7 @@ constexpr std::uint16_t kVehicleChannel = 2;
 constexpr std::uint16_t kHandoffChannel = 3;
 constexpr std::uint16_t kPlayChannel = 4;
 constexpr std::uint16_t kStepDoneChannel = 5;
+constexpr std::uint16_t kCommandChannel = 6;
 
 struct ChannelSpec {
   std::uint16_t id;
@@ -36,7 +38,8 @@ constexpr ChannelSpec kChannels[] = {{kEgoChannel, dds::Topic::kEgoState},
                                      {kVehicleChannel, dds::Topic::kVehicleState},
                                      {kHandoffChannel, dds::Topic::kHandoff},
                                      {kPlayChannel, dds::Topic::kPlayStatus},
-                                     {kStepDoneChannel, dds::Topic::kStepDone}};
+                                     {kStepDoneChannel, dds::Topic::kStepDone},
+                                     {kCommandChannel, dds::Topic::kActorCommand}};
 
 std::string fmt_double(double v) {
   std::ostringstream os;
@@ -105,11 +108,16 @@ void RecordingWriter::write_step(StepSamples s) {
     return a.handoff_sequence() < b.handoff_sequence();
   });
   std::sort(s.plays.begin(), s.plays.end(), [](const auto& a, const auto& b) { return a.play_id() < b.play_id(); });
+  // One writer (the director): commands for one vehicle keep the order it wrote them in.
+  std::stable_sort(s.commands.begin(), s.commands.end(), [](const auto& a, const auto& b) {
+    return a.vehicle_id() != b.vehicle_id() ? a.vehicle_id() < b.vehicle_id() : a.step() < b.step();
+  });
   std::sort(s.done.begin(), s.done.end(), [](const auto& a, const auto& b) { return a.service() < b.service(); });
   if (s.ego) write_sample<msg::EgoStatePubSubType>(kEgoChannel, t, *s.ego);
   for (const auto& v : s.vehicles) write_sample<msg::VehicleStatePubSubType>(kVehicleChannel, t, v);
   for (const auto& h : s.handoffs) write_sample<msg::HandoffPubSubType>(kHandoffChannel, t, h);
   for (const auto& p : s.plays) write_sample<msg::PlayStatusPubSubType>(kPlayChannel, t, p);
+  for (const auto& c : s.commands) write_sample<msg::ActorCommandPubSubType>(kCommandChannel, t, c);
   for (const auto& d : s.done) write_sample<msg::StepDonePubSubType>(kStepDoneChannel, t, d);
 }
 
@@ -146,6 +154,9 @@ std::optional<Recording> read_recording(const std::string& path, std::string* er
       case dds::Topic::kVehicleState: decode(from_cdr<msg::VehicleStatePubSubType>(m.data), r.vehicles); break;
       case dds::Topic::kHandoff: decode(from_cdr<msg::HandoffPubSubType>(m.data), r.handoffs); break;
       case dds::Topic::kPlayStatus: decode(from_cdr<msg::PlayStatusPubSubType>(m.data), r.plays); break;
+      case dds::Topic::kActorCommand:
+        decode(from_cdr<msg::ActorCommandPubSubType>(m.data), r.commands);
+        break;
       case dds::Topic::kStepDone: decode(from_cdr<msg::StepDonePubSubType>(m.data), r.done); break;
       case dds::Topic::kServiceStatus: break;
     }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "entourage_msg/ActorCommand.h"
 #include "entourage_msg/EgoState.h"
 #include "entourage_msg/Handoff.h"
 #include "entourage_msg/PlayStatus.h"
@@ -42,6 +43,7 @@ struct StepSamples {
   std::vector<msg::VehicleState> vehicles;
   std::vector<msg::Handoff> handoffs;
   std::vector<msg::PlayStatus> plays;
+  std::vector<msg::ActorCommand> commands;
   std::vector<msg::StepDone> done;
 };
 
@@ -70,6 +72,7 @@ struct Recording {
   std::vector<msg::VehicleState> vehicles;
   std::vector<msg::Handoff> handoffs;
   std::vector<msg::PlayStatus> plays;
+  std::vector<msg::ActorCommand> commands;
   std::vector<msg::StepDone> done;
   std::uint64_t undecodable = 0;  // messages whose bytes did not decode (reported, not fatal)
 };

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "core/ids.hpp"
+#include "traffic/actor_control.hpp"
 #include "traffic/handoff.hpp"
 
 namespace entourage::recording {
@@ -40,6 +41,26 @@ PlayRow play_row(const msg::PlayStatus& p) {
           p.estimated_start_time_s(), p.detail().to_string()};
 }
 
+const char* control_name(std::uint8_t mode) { return to_string(static_cast<ControlMode>(mode)); }
+
+CommandRow command_row(const msg::ActorCommand& c) {
+  CommandRow row;
+  row.step = c.step();
+  row.time_s = c.time_s();
+  row.vehicle_id = c.vehicle_id();
+  row.play_id = c.play_id();
+  row.mode = control_name(c.mode());
+  row.speed_mps = c.speed_mps();
+  row.accel_mps2 = c.accel_mps2();
+  row.decel_mps2 = c.decel_mps2();
+  row.max_jerk_mps3 = c.max_jerk_mps3();
+  row.lane = c.lane();
+  row.force_lane = c.force_lane();
+  row.lane_change_duration_s = c.lane_change_duration_s();
+  row.indicator = c.indicator();
+  return row;
+}
+
 }  // namespace
 
 Tables tables_from(const Recording& r, const std::vector<std::string>& type_names) {
@@ -67,6 +88,7 @@ Tables tables_from(const Recording& r, const std::vector<std::string>& type_name
     row.length_m = m.length_m();
     row.width_m = m.width_m();
     row.type = m.type_index() < type_names.size() ? type_names[m.type_index()] : "type" + std::to_string(m.type_index());
+    row.control = control_name(m.control());
     t.vehicles.push_back(std::move(row));
   }
   for (const auto& m : r.egos) {
@@ -75,6 +97,7 @@ Tables tables_from(const Recording& r, const std::vector<std::string>& type_name
   }
   for (const auto& h : r.handoffs) t.handoffs.push_back(handoff_row(h));
   for (const auto& p : r.plays) t.plays.push_back(play_row(p));
+  for (const auto& c : r.commands) t.commands.push_back(command_row(c));
   sort_rows(t);
   return t;
 }

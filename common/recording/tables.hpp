@@ -31,6 +31,7 @@ struct VehicleRow {
   double length_m = 0.0;
   double width_m = 0.0;
   std::string type;
+  std::string control = "autonomous";  // its ControlMode: autonomous, transported, controlled, releasing
 };
 
 struct EgoRow {
@@ -75,6 +76,23 @@ struct PlayRow {
   std::string detail;
 };
 
+// A command of the director to one of its actors (ActorCommand.idl).
+struct CommandRow {
+  std::uint64_t step = 0;  // the director's step that wrote it; applied at the next one
+  double time_s = 0.0;
+  std::uint32_t vehicle_id = 0;
+  std::uint32_t play_id = 0;
+  std::string mode;  // autonomous, transported, controlled, releasing (unknown for a bad value)
+  double speed_mps = 0.0;
+  double accel_mps2 = 0.0;
+  double decel_mps2 = 0.0;
+  double max_jerk_mps3 = 0.0;
+  int lane = -1;  // -1 none
+  bool force_lane = false;
+  double lane_change_duration_s = 0.0;
+  std::uint32_t indicator = 0;  // 0 off, 1 left, 2 right
+};
+
 struct Tables {
   RecordingInfo info;               // the run's settings and scenario text
   std::uint64_t undecodable = 0;    // recorded messages that did not decode
@@ -82,6 +100,7 @@ struct Tables {
   std::vector<EgoRow> ego;           // sorted by step
   std::vector<HandoffRow> handoffs;  // as recorded
   std::vector<PlayRow> plays;        // as recorded
+  std::vector<CommandRow> commands;  // as recorded
 };
 
 // `type_names[i]` names vehicle type i (from the recorded scenario).

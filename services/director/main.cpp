@@ -1,4 +1,6 @@
 // entourage-director: the event director (see README.md).
+#include "entourage_msg/ActorCommandPubSubTypes.h"
+#include "entourage_msg/HandoffPubSubTypes.h"
 #include "entourage_msg/PlayStatusPubSubTypes.h"
 
 #include "dds/region_shell.hpp"
@@ -29,6 +31,10 @@ msg::PlayStatus to_msg(const director::PlayReport& r, Step k, double time_s) {
 int run(const dds::ServiceContext& ctx) {
   dds::Shell shell(ctx);
   const auto plays = shell.node.writer<msg::PlayStatusPubSubType>(dds::Topic::kPlayStatus);
+  // The director's commands to its actors and the vehicles it creates (handed to meso): the writers
+  // exist, so that every reader matches them, before the core produces any (issue 5).
+  [[maybe_unused]] const auto commands = shell.node.writer<msg::ActorCommandPubSubType>(dds::Topic::kActorCommand);
+  [[maybe_unused]] const auto handoffs = shell.node.writer<msg::HandoffPubSubType>(dds::Topic::kHandoff);
   if (!shell.discover(ctx)) return 1;
 
   director::DirectorCore core(ctx.scenario.config, ctx.seed);

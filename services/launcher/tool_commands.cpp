@@ -105,8 +105,8 @@ int export_command(int argc, char** argv) {
   std::string path;
   std::string dir;
   cli::Args args("entourage export",
-                 "Writes a recording as CSV: vehicles.csv, ego.csv, handoffs.csv, plays.csv, with run.csv and "
-                 "scenario.pbtxt, which entourage verify DIR reads back.");
+                 "Writes a recording as CSV: vehicles.csv, ego.csv, handoffs.csv, plays.csv, commands.csv, with "
+                 "run.csv and scenario.pbtxt, which entourage verify DIR reads back.");
   args.positional("RECORDING", "an MCAP recording made by entourage run", &path);
   args.option("csv", "DIR", "directory to write the CSV files to; required", &dir);
   if (int rc = parse_or_exit(args, argc, argv, "export"); rc >= 0) return rc;
@@ -123,7 +123,8 @@ int export_command(int argc, char** argv) {
     return 1;
   }
   std::cout << "wrote " << tables.vehicles.size() << " vehicle rows, " << tables.ego.size() << " ego rows, "
-            << tables.handoffs.size() << " handoffs and " << tables.plays.size() << " play reports to " << dir << "/\n";
+            << tables.handoffs.size() << " handoffs, " << tables.plays.size() << " play reports and "
+            << tables.commands.size() << " director commands to " << dir << "/\n";
   return 0;
 }
 

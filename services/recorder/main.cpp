@@ -27,6 +27,7 @@ recording::StepSamples collect(dds::Inbox& inbox, Step step, double step_s) {
   s.vehicles = std::move(b.vehicles);
   s.handoffs = std::move(b.handoffs);
   s.plays = std::move(b.plays);
+  s.commands = std::move(b.commands);
   s.done = std::move(b.done);
   return s;
 }
@@ -100,8 +101,8 @@ int recorder_main(int argc, char** argv) {
   RecorderOptions ro;
   return dds::service_main(
       argc, argv, ServiceId{Role::kRecorder, 0},
-      "Records every simulation topic (ego and vehicle states, handoffs, play status, step reports) to an MCAP "
-      "file, each sample as its CDR bytes with the IDL of its type as schema.",
+      "Records every simulation topic (ego and vehicle states, handoffs, play status, director commands, step "
+      "reports) to an MCAP file, each sample as its CDR bytes with the IDL of its type as schema.",
       [&ro](cli::Args& args) { args.option("out", "FILE", "the MCAP file to write; required", &ro.out); },
       [&ro](const dds::ServiceContext& ctx) { return run(ctx, ro); },
       [&ro](ServiceId*) -> std::optional<std::string> {

@@ -6,6 +6,7 @@
 
 #include "cli/args.hpp"
 #include "dds/inbox.hpp"
+#include "dds/region_shell.hpp"
 
 namespace entourage {
 namespace {
@@ -144,6 +145,92 @@ TEST(Inbox, LateHandoffsAreNeverDropped) {
   const auto late = in.take_handoffs_upto(10);
   ASSERT_EQ(late.size(), 1U);
   EXPECT_EQ(late[0].vehicle_id(), 4U);
+}
+
+constexpr ServiceId kDirector{Role::kDirector, 0};
+
+msg::ActorCommand command(std::uint32_t vehicle_id, std::uint64_t step, std::uint8_t mode = 2) {
+  ActorCommand c;
+  c.vehicle = vehicle_id;
+  c.step = step;
+  c.control.mode = static_cast<ControlMode>(mode);
+  c.control.play_id = 1;
+  c.control.speed_mps = 20.0;
+  return dds::to_msg(c, 0.1 * static_cast<double>(step));
+}
+
+TEST(Inbox, AStepWaitsForEveryCommandTheDirectorAnnounced) {
+  dds::Inbox in({kEgo, kMicro, kDirector}, kMicro, limits());
+  dds::TopicCounts two{};
+  two[static_cast<std::size_t>(dds::Topic::kActorCommand)] = 2;
+  const dds::TopicMask mask = dds::mask_of(dds::Topic::kVehicleState) | dds::mask_of(dds::Topic::kActorCommand);
+  in.add(dds::make_step_done(kEgo, 3, {}, 0));
+  in.add(command(5, 3));
+  in.add(dds::make_step_done(kDirector, 3, two, 0));
+  EXPECT_FALSE(in.complete(3, mask));
+  EXPECT_NE(in.missing(3, mask).find("1/2 entourage/actor_command"), std::string::npos) << in.missing(3, mask);
+  in.add(command(4, 3));
+  EXPECT_TRUE(in.complete(3, mask));
+  const auto taken = in.take_commands_upto(3);
+  ASSERT_EQ(taken.size(), 2U);
+  EXPECT_TRUE(in.take_commands_upto(3).empty());  // taken once
+  EXPECT_TRUE(in.take(3).commands.empty());
+}
+
+TEST(Inbox, BadCommandsAreCountedDroppedAndStillCompleteTheStep) {
+  dds::Inbox in({kEgo, kDirector}, kMeso, limits());
+  dds::TopicCounts one{};
+  one[static_cast<std::size_t>(dds::Topic::kActorCommand)] = 1;
+  in.add(dds::make_step_done(kEgo, 6, {}, 0));
+  in.add(dds::make_step_done(kDirector, 6, one, 0));
+  in.add(command(5, 6, /*mode=*/9));
+  EXPECT_EQ(in.bad_samples(), 1U);
+  EXPECT_TRUE(in.complete(6, dds::mask_of(dds::Topic::kActorCommand)));
+  EXPECT_TRUE(in.take_commands_upto(6).empty());
+}
+
+TEST(Inbox, LateCommandsAreNeverDropped) {
+  dds::Inbox in({kEgo, kDirector}, kMicro, limits());
+  in.add(command(8, 2));
+  in.forget_before(10);  // step 2 is long gone, but the command is kept
+  EXPECT_EQ(in.steps_with_samples_before(11), std::vector<Step>{10});
+  const auto late = in.take_commands_upto(10);
+  ASSERT_EQ(late.size(), 1U);
+  EXPECT_EQ(late[0].vehicle_id(), 8U);
+  EXPECT_EQ(late[0].step(), 2U);
+}
+
+msg::EgoState ego_state(std::uint64_t step) {
+  msg::EgoState m;
+  m.step(step);
+  m.direction(1);
+  m.speed_mps(30.0);
+  m.length_m(4.6);
+  m.width_m(1.8);
+  return m;
+}
+
+TEST(GatherInputs, CommandsOfThePreviousStepByVehicleThenStep) {
+  dds::Inbox in({kEgo, kMeso, kDirector}, kMicro, limits());
+  in.add(ego_state(4));
+  in.add(ego_state(5));
+  in.add(command(9, 2));  // late: arrived after its step
+  in.forget_before(4);
+  in.add(command(9, 4));
+  in.add(command(3, 4));
+  in.add(command(6, 5));  // written at step 5: for step 6
+  const StepInput input = dds::gather_inputs(5, in, {});
+  ASSERT_EQ(input.commands.size(), 3U);
+  EXPECT_EQ(input.commands[0].vehicle, 3U);
+  EXPECT_EQ(input.commands[1].vehicle, 9U);
+  EXPECT_EQ(input.commands[1].step, 2U);
+  EXPECT_EQ(input.commands[2].vehicle, 9U);
+  EXPECT_EQ(input.commands[2].step, 4U);
+  EXPECT_EQ(input.commands[2].control.mode, ControlMode::kControlled);
+  EXPECT_DOUBLE_EQ(input.commands[2].control.speed_mps, 20.0);
+  const auto next = in.take_commands_upto(5);
+  ASSERT_EQ(next.size(), 1U);
+  EXPECT_EQ(next[0].vehicle_id(), 6U);
 }
 
 }  // namespace

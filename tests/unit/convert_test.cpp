@@ -137,12 +137,187 @@ TEST(Convert, BadSamplesAreRefusedWithAReason) {
   EXPECT_TRUE(check(h, limits()).has_value());
 }
 
+ActorControl sample_control() {
+  ActorControl c;
+  c.mode = ControlMode::kControlled;
+  c.play_id = 3;
+  c.speed_mps = 22.5;
+  c.accel_mps2 = 1.25;
+  c.decel_mps2 = 4.5;
+  c.max_jerk_mps3 = 1.5;
+  c.lane = 1;
+  c.force_lane = true;
+  c.lane_change_duration_s = 2.5;
+  c.indicator = 1;
+  return c;
+}
+
+void expect_same_control(const ActorControl& b, const ActorControl& a) {
+  EXPECT_EQ(b.mode, a.mode);
+  EXPECT_EQ(b.play_id, a.play_id);
+  EXPECT_EQ(b.speed_mps, a.speed_mps);
+  EXPECT_EQ(b.accel_mps2, a.accel_mps2);
+  EXPECT_EQ(b.decel_mps2, a.decel_mps2);
+  EXPECT_EQ(b.max_jerk_mps3, a.max_jerk_mps3);
+  EXPECT_EQ(b.lane, a.lane);
+  EXPECT_EQ(b.force_lane, a.force_lane);
+  EXPECT_EQ(b.lane_change_duration_s, a.lane_change_duration_s);
+  EXPECT_EQ(b.indicator, a.indicator);
+}
+
+TEST(Convert, HandoffCarriesTheActorControl) {
+  const Road road(road_config());
+  Vehicle v = sample_vehicle();
+  v.control = sample_control();
+  const msg::Handoff m =
+      to_msg(make_handoff(v, 12, ServiceId{Role::kMeso, 1}, Role::kMicro, Region::kInner, HandoffReason::kBorder), 1.2,
+             road);
+  EXPECT_FALSE(check(m, limits()).has_value());
+  EXPECT_EQ(m.control().mode(), 2);
+  expect_same_control(from_msg(m).vehicle.control, v.control);
+  // An everyday vehicle: autonomous, with the defaults of ActorControl.
+  const Handoff plain = from_msg(to_msg(
+      make_handoff(sample_vehicle(), 12, ServiceId{Role::kMeso, 1}, Role::kMicro, Region::kInner, HandoffReason::kBorder),
+      1.2, road));
+  expect_same_control(plain.vehicle.control, ActorControl{});
+  EXPECT_FALSE(plain.vehicle.control.active());
+}
+
+TEST(Convert, ABirthFromTheDirectorPassesTheChecks) {
+  const Road road(road_config());
+  Vehicle v = sample_vehicle();
+  v.id = kDirectorFirstVehicleId;
+  v.handoff_sequence = 0;  // a new vehicle, as the generator makes them
+  v.control = sample_control();
+  v.control.mode = ControlMode::kTransported;
+  const msg::Handoff m = to_msg(
+      make_handoff(v, 40, ServiceId{Role::kDirector, 0}, Role::kMeso, Region::kOuterFront, HandoffReason::kDirector),
+      4.0, road);
+  EXPECT_EQ(m.handoff_sequence(), 1U);
+  EXPECT_FALSE(check(m, limits()).has_value());
+  const Handoff back = from_msg(m);
+  EXPECT_EQ(back.from, (ServiceId{Role::kDirector, 0}));
+  EXPECT_EQ(back.reason, HandoffReason::kDirector);
+  EXPECT_EQ(back.vehicle.control.mode, ControlMode::kTransported);
+}
+
+TEST(Convert, AHandoffWithABadControlIsRefused) {
+  const Road road(road_config());
+  Vehicle v = sample_vehicle();
+  v.control = sample_control();
+  const msg::Handoff good =
+      to_msg(make_handoff(v, 1, ServiceId{Role::kMicro, 0}, Role::kMeso, Region::kOuterRear, HandoffReason::kBorder),
+             0.1, road);
+  msg::Handoff mode = good;
+  mode.control().mode(4);
+  EXPECT_NE(check(mode, limits())->find("control mode 4"), std::string::npos);
+  msg::Handoff nan = good;
+  nan.control().speed_mps(std::numeric_limits<double>::infinity());
+  EXPECT_NE(check(nan, limits())->find("not finite"), std::string::npos);
+  msg::Handoff rate = good;
+  rate.control().decel_mps2(0.0);
+  EXPECT_NE(check(rate, limits())->find("deceleration"), std::string::npos);
+}
+
+TEST(Convert, VehicleStateCarriesTheControlMode) {
+  const Road road(road_config());
+  Vehicle v = sample_vehicle();
+  v.control.mode = ControlMode::kReleasing;
+  const msg::VehicleState m = to_msg(VehicleReport{v, Region::kInner}, ServiceId{Role::kMicro, 0}, 5, 0.5, road);
+  EXPECT_EQ(m.control(), 3);
+  EXPECT_FALSE(check(m, limits()).has_value());
+  EXPECT_EQ(from_msg(m).control, ControlMode::kReleasing);
+  const msg::VehicleState plain =
+      to_msg(VehicleReport{sample_vehicle(), Region::kInner}, ServiceId{Role::kMicro, 0}, 5, 0.5, road);
+  EXPECT_EQ(plain.control(), 0);
+  EXPECT_EQ(from_msg(plain).control, ControlMode::kAutonomous);
+  msg::VehicleState bad = m;
+  bad.control(4);
+  EXPECT_NE(check(bad, limits())->find("control mode 4"), std::string::npos);
+}
+
+TEST(Convert, ActorCommandRoundTrip) {
+  ActorCommand c;
+  c.vehicle = 77;
+  c.step = 120;
+  c.control = sample_control();
+  const msg::ActorCommand m = to_msg(c, 12.0);
+  EXPECT_EQ(m.vehicle_id(), 77U);
+  EXPECT_EQ(m.step(), 120U);
+  EXPECT_EQ(m.time_s(), 12.0);
+  EXPECT_FALSE(check(m, limits()).has_value());
+  const ActorCommand back = from_msg(m);
+  EXPECT_EQ(back.vehicle, 77U);
+  EXPECT_EQ(back.step, 120U);
+  expect_same_control(back.control, c.control);
+}
+
+TEST(Convert, BadActorCommandsAreRefusedWithAReason) {
+  ActorCommand c;
+  c.vehicle = 77;
+  c.step = 120;
+  c.control = sample_control();
+  const msg::ActorCommand good = to_msg(c, 12.0);
+  auto reason = [](const msg::ActorCommand& m) { return check(m, limits()).value_or("accepted"); };
+  msg::ActorCommand m = good;
+  m.accel_mps2(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_NE(reason(m).find("not finite"), std::string::npos);
+  m = good;
+  m.time_s(std::numeric_limits<double>::infinity());
+  EXPECT_NE(reason(m).find("not finite"), std::string::npos);
+  m = good;
+  m.mode(4);
+  EXPECT_EQ(reason(m), "unknown control mode 4");
+  m = good;
+  m.indicator(3);
+  EXPECT_NE(reason(m).find("indicator 3"), std::string::npos);
+  m = good;
+  m.accel_mps2(0.0);
+  EXPECT_NE(reason(m).find("(0, 15] m/s^2"), std::string::npos);
+  m = good;
+  m.decel_mps2(15.5);
+  EXPECT_NE(reason(m).find("(0, 15] m/s^2"), std::string::npos);
+  m.decel_mps2(15.0);
+  EXPECT_EQ(reason(m), "accepted");
+  m = good;
+  m.mode(static_cast<uint8_t>(ControlMode::kReleasing));  // the rates matter only under control
+  m.accel_mps2(0.0);
+  EXPECT_EQ(reason(m), "accepted");
+  m.max_jerk_mps3(0.0);
+  EXPECT_NE(reason(m).find("jerk"), std::string::npos);
+  m = good;
+  m.speed_mps(-1.0);
+  EXPECT_NE(reason(m).find("speed"), std::string::npos);
+  m.speed_mps(100.0);
+  EXPECT_NE(reason(m).find("speed"), std::string::npos);
+  m.speed_mps(99.9);
+  EXPECT_EQ(reason(m), "accepted");
+  m = good;
+  m.lane(-2);
+  EXPECT_NE(reason(m).find("lane -2"), std::string::npos);
+  m.lane(16);
+  EXPECT_NE(reason(m).find("lane 16"), std::string::npos);
+  m.lane(-1);
+  EXPECT_EQ(reason(m), "accepted");
+  m.lane(15);
+  EXPECT_EQ(reason(m), "accepted");
+  m = good;
+  m.lane_change_duration_s(-0.5);
+  EXPECT_NE(reason(m).find("duration"), std::string::npos);
+  m = good;
+  m.vehicle_id(kEgoVehicleId);
+  EXPECT_NE(reason(m).find("ego"), std::string::npos);
+}
+
 TEST(Convert, StepDoneCountsRoundTrip) {
   TopicCounts c{};
   c[static_cast<std::size_t>(Topic::kVehicleState)] = 12;
   c[static_cast<std::size_t>(Topic::kHandoff)] = 3;
+  c[static_cast<std::size_t>(Topic::kPlayStatus)] = 1;
+  c[static_cast<std::size_t>(Topic::kActorCommand)] = 2;
   const msg::StepDone m = make_step_done(ServiceId{Role::kMeso, 1}, 99, c, 40);
   EXPECT_EQ(counts_of(m), c);
+  EXPECT_EQ(m.actor_commands(), 2U);
   EXPECT_EQ(m.owned_vehicles(), 40U);
   EXPECT_EQ(m.step(), 99U);
 }

@@ -69,11 +69,13 @@ Tables sample() {
     t.vehicles.push_back({k, time_s, 7, "micro", "inner", 1, 0, 1, 1100.0 / 3.0, -5.25, 2.5e-7, 1e22, -1.0 / 3.0,
                           29.999999999999996, -2.5, 4.5, 1.8, "car, \"small\""});
     t.vehicles.push_back({k, time_s, 4000000000U, "service-771", "outer_rear", -1, 1, 1, 900.0, 1.75, 0, 0, 0, 25.0,
-                          0, 12.0, 2.5, "truck"});
+                          0, 12.0, 2.5, "truck", k == 2 ? "transported" : "autonomous"});
   }
   t.handoffs.push_back({1, 0.1, 7, 1, "generator", "micro", "inner", "initial_fill", 0, 1100.0 / 3.0, 30.0});
   t.handoffs.push_back({3, 0.30000000000000004, 7, 2, "micro", "none", "outside", "left_window", 0, 2e5, 0.0});
   t.plays.push_back({2, 0.2, 1, "lead vehicle brakes", 7, 1300.5, -1.0, "outcome: braked, \"hard\""});
+  t.commands.push_back({2, 0.2, 4000000000U, 1, "controlled", 1.0 / 3.0, 2.5, 7.25, 1e-3, -1, true, 0.0, 2});
+  t.commands.push_back({3, 0.30000000000000004, 7, 1, "releasing", 0.0, 1.0, 1.0, 2.0, 15, false, 3.5, 0});
   return t;
 }
 
@@ -113,6 +115,20 @@ TEST(CsvTables, RoundTripGivesTheSameValues) {
   EXPECT_EQ(back->ego[0].length_m, 4.6);
   EXPECT_EQ(back->handoffs[0].reason, "initial_fill");
   EXPECT_EQ(back->plays[0].detail, "outcome: braked, \"hard\"");
+  EXPECT_EQ(back->vehicles[3].control, "transported");  // step 2, vehicle 4000000000
+  EXPECT_EQ(back->vehicles[2].control, "autonomous");
+  ASSERT_EQ(back->commands.size(), 2U);
+  EXPECT_EQ(back->commands[0].vehicle_id, 4000000000U);
+  EXPECT_EQ(back->commands[0].mode, "controlled");
+  EXPECT_EQ(back->commands[0].speed_mps, 1.0 / 3.0);
+  EXPECT_EQ(back->commands[0].max_jerk_mps3, 1e-3);
+  EXPECT_EQ(back->commands[0].lane, -1);
+  EXPECT_TRUE(back->commands[0].force_lane);
+  EXPECT_EQ(back->commands[0].indicator, 2U);
+  EXPECT_EQ(back->commands[1].time_s, 0.30000000000000004);
+  EXPECT_EQ(back->commands[1].mode, "releasing");
+  EXPECT_FALSE(back->commands[1].force_lane);
+  EXPECT_EQ(back->commands[1].lane, 15);
   EXPECT_EQ(back->info.scenario_text, t.info.scenario_text);
   EXPECT_EQ(back->info.scenario_name, t.info.scenario_name);
   EXPECT_EQ(back->info.peers, t.info.peers);
@@ -123,7 +139,7 @@ TEST(CsvTables, RoundTripGivesTheSameValues) {
   // differently, so equal files mean equal values).
   const std::string again = fresh_dir("round_trip_again");
   ASSERT_TRUE(write_csv(*back, again, &error)) << error;
-  for (const char* f : {kVehiclesFile, kEgoFile, kHandoffsFile, kPlaysFile, kRunFile, kScenarioFile}) {
+  for (const char* f : {kVehiclesFile, kEgoFile, kHandoffsFile, kPlaysFile, kCommandsFile, kRunFile, kScenarioFile}) {
     EXPECT_EQ(bytes(dir + "/" + f), bytes(again + "/" + f)) << f;
   }
 }
@@ -145,7 +161,7 @@ TEST(CsvTables, RowsComeBackSortedByStepThenId) {
 }
 
 TEST(CsvTables, AMissingFileIsNamed) {
-  for (const char* f : {kVehiclesFile, kEgoFile, kHandoffsFile, kPlaysFile, kRunFile, kScenarioFile}) {
+  for (const char* f : {kVehiclesFile, kEgoFile, kHandoffsFile, kPlaysFile, kCommandsFile, kRunFile, kScenarioFile}) {
     const std::string dir = exported("missing");
     fs::remove(dir + "/" + f);
     EXPECT_EQ(refusal(dir), dir + "/" + f + ": cannot open: No such file or directory");
@@ -229,6 +245,20 @@ TEST(CsvTables, AnUnknownNameIsRefused) {
   row.replace(row.find(",micro,"), 7, ",driver,");
   replace_line(dir + "/vehicles.csv", 2, row);
   EXPECT_EQ(refusal(dir).rfind(dir + "/vehicles.csv:2:4: owner: \"driver\" is not a service name", 0), 0U);
+}
+
+TEST(CsvTables, ABadCommandFieldIsNamed) {
+  const std::string dir = exported("bad_command");
+  std::string row = line_of(dir + "/commands.csv", 2);
+  EXPECT_EQ(row, "2,0.2,4000000000,1,controlled,0.3333333333333333,2.5,7.25,0.001,-1,1,0,2");
+  replace_line(dir + "/commands.csv", 2, "2,0.2,4000000000,1,steered,0.3333333333333333,2.5,7.25,0.001,-1,1,0,2");
+  EXPECT_EQ(refusal(dir), dir + "/commands.csv:2:5: mode: \"steered\" is not one of "
+                              "autonomous,transported,controlled,releasing,unknown");
+  replace_line(dir + "/commands.csv", 2, "2,0.2,4000000000,1,controlled,0.3333333333333333,2.5,7.25,0.001,-1,yes,0,2");
+  EXPECT_EQ(refusal(dir), dir + "/commands.csv:2:11: force_lane: \"yes\" is not one of 0,1");
+  std::string vehicles = line_of(dir + "/vehicles.csv", 2);
+  replace_line(dir + "/vehicles.csv", 2, vehicles.substr(0, vehicles.rfind(',')) + ",driven");
+  EXPECT_EQ(refusal(dir).rfind(dir + "/vehicles.csv:2:19: control: \"driven\" is not one of", 0), 0U);
 }
 
 TEST(CsvTables, BrokenQuotingIsRefused) {

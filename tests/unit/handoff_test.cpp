@@ -60,6 +60,21 @@ TEST(Handoff, AVehicleComingBackIsAcceptedAgain) {
   EXPECT_TRUE(meso.accept({birth}).empty());
 }
 
+TEST(Handoff, ABirthFromTheDirectorIsAcceptedOnceWithItsControl) {
+  constexpr ServiceId kDirector{Role::kDirector, 0};
+  HandoffInbox meso(Role::kMeso, {Region::kOuterRear, Region::kOuterFront});
+  Vehicle v = vehicle(kDirectorFirstVehicleId);
+  v.control.mode = ControlMode::kTransported;
+  v.control.play_id = 2;
+  const Handoff birth = make_handoff(v, 30, kDirector, Role::kMeso, Region::kOuterFront, HandoffReason::kDirector);
+  EXPECT_EQ(birth.vehicle.handoff_sequence, 1U);  // as the generator's births
+  const auto out = meso.accept({birth, birth});
+  ASSERT_EQ(out.size(), 1U);
+  EXPECT_EQ(out[0].vehicle.control.mode, ControlMode::kTransported);
+  EXPECT_EQ(out[0].vehicle.control.play_id, 2U);
+  EXPECT_EQ(meso.duplicates(), 1U);
+}
+
 TEST(Handoff, AcceptedInDeterministicOrder) {
   HandoffInbox micro(Role::kMicro, {Region::kInner});
   const Handoff a = make_handoff(vehicle(5), 3, kMeso, Role::kMicro, Region::kInner, HandoffReason::kBorder);

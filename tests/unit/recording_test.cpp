@@ -2,6 +2,7 @@
 // exported to CSV and back; the invariant checks catch what they claim to.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -69,6 +70,24 @@ RecordingInfo info() {
   return i;
 }
 
+msg::ActorCommand command(std::uint32_t vehicle_id, std::uint64_t step, double speed) {
+  msg::ActorCommand m;
+  m.vehicle_id(vehicle_id);
+  m.step(step);
+  m.time_s(0.1 * static_cast<double>(step));
+  m.play_id(4);
+  m.mode(2);  // controlled
+  m.speed_mps(speed);
+  m.accel_mps2(1.5);
+  m.decel_mps2(6.0);
+  m.max_jerk_mps3(2.0);
+  m.lane(1);
+  m.force_lane(true);
+  m.lane_change_duration_s(2.5);
+  m.indicator(1);
+  return m;
+}
+
 void write(const std::string& path, bool shuffled) {
   RecordingWriter w;
   ASSERT_TRUE(w.open(path, info())) << w.error();
@@ -78,7 +97,12 @@ void write(const std::string& path, bool shuffled) {
     s.time_s = 0.1 * static_cast<double>(k);
     s.ego = ego(k, 1000.0 + 3.0 * static_cast<double>(k));
     s.vehicles = {vehicle(7, k, 1100.0, 0), vehicle(3, k, 900.0, 1, 0x0400, 1)};
-    if (shuffled) std::swap(s.vehicles[0], s.vehicles[1]);
+    s.vehicles[0].control(k == 2 ? 2 : 0);  // vehicle 7 under the director's control at step 2
+    if (k == 1) s.commands = {command(7, 1, 20.0), command(3, 1, 25.0)};
+    if (shuffled) {
+      std::swap(s.vehicles[0], s.vehicles[1]);
+      std::reverse(s.commands.begin(), s.commands.end());
+    }
     w.write_step(s);
   }
   ASSERT_TRUE(w.close());
@@ -109,6 +133,12 @@ TEST(Recording, ReadsBackEverySampleAndTheScenario) {
   EXPECT_EQ(r->info.seed, 5U);
   EXPECT_EQ(r->info.peers, "ego,micro");
   EXPECT_DOUBLE_EQ(r->vehicles[0].s_m(), 1100.0);  // sorted by owner: micro (0x0300) before meso
+  ASSERT_EQ(r->commands.size(), 2U);
+  EXPECT_EQ(r->commands[0].vehicle_id(), 3U);  // sorted by vehicle
+  EXPECT_EQ(r->commands[1].vehicle_id(), 7U);
+  EXPECT_EQ(r->commands[1].step(), 1U);
+  EXPECT_EQ(r->commands[1].speed_mps(), 20.0);
+  EXPECT_TRUE(r->commands[1].force_lane());
 }
 
 TEST(Recording, CsvExportRoundTrips) {
@@ -124,7 +154,16 @@ TEST(Recording, CsvExportRoundTrips) {
   std::getline(v, header);
   EXPECT_EQ(header,
             "step,time_s,id,owner,region,direction,lane,s_m,d_m,x_m,y_m,heading_rad,speed_mps,accel_mps2,length_m,width_m,"
-            "type,target_lane");
+            "type,target_lane,control");
+  std::ifstream c(dir + "/commands.csv");
+  std::string command_header;
+  std::string command_row;
+  std::getline(c, command_header);
+  std::getline(c, command_row);
+  EXPECT_EQ(command_header,
+            "step,time_s,vehicle_id,play_id,mode,speed_mps,accel_mps2,decel_mps2,max_jerk_mps3,lane,force_lane,"
+            "lane_change_duration_s,indicator");
+  EXPECT_EQ(command_row, "1,0.1,3,4,controlled,25,1.5,6,2,1,1,2.5,1");
   const auto back = read_csv(dir, &error);
   ASSERT_TRUE(back) << error;
   ASSERT_EQ(back->vehicles.size(), 6U);
@@ -132,7 +171,25 @@ TEST(Recording, CsvExportRoundTrips) {
   EXPECT_EQ(back->vehicles[0].owner, "meso");
   EXPECT_EQ(back->vehicles[0].region, "outer_rear");
   EXPECT_EQ(back->vehicles[0].type, "car");
+  EXPECT_EQ(back->vehicles[0].control, "autonomous");
+  EXPECT_EQ(back->vehicles[5].id, 7U);
+  EXPECT_EQ(back->vehicles[5].control, "controlled");
   EXPECT_EQ(back->ego.size(), 3U);
+  ASSERT_EQ(back->commands.size(), 2U);
+  const CommandRow& cmd = back->commands[1];
+  EXPECT_EQ(cmd.step, 1U);
+  EXPECT_EQ(cmd.time_s, 0.1);
+  EXPECT_EQ(cmd.vehicle_id, 7U);
+  EXPECT_EQ(cmd.play_id, 4U);
+  EXPECT_EQ(cmd.mode, "controlled");
+  EXPECT_EQ(cmd.speed_mps, 20.0);
+  EXPECT_EQ(cmd.accel_mps2, 1.5);
+  EXPECT_EQ(cmd.decel_mps2, 6.0);
+  EXPECT_EQ(cmd.max_jerk_mps3, 2.0);
+  EXPECT_EQ(cmd.lane, 1);
+  EXPECT_TRUE(cmd.force_lane);
+  EXPECT_EQ(cmd.lane_change_duration_s, 2.5);
+  EXPECT_EQ(cmd.indicator, 1U);
 }
 
 CheckResult find(const std::vector<CheckResult>& all, const std::string& name) {
