@@ -26,8 +26,9 @@ const csv::Columns kEgoColumns{"step",      "time_s",     "s_m",  "d_m",      "x
                                "heading_rad", "speed_mps", "accel_mps2", "lane", "length_m", "width_m"};
 const csv::Columns kHandoffColumns{"step",    "time_s",    "vehicle_id", "sequence", "from", "to_role",
                                    "to_region", "reason", "lane",       "s_m",      "speed_mps"};
-const csv::Columns kPlayColumns{"step",  "time_s",  "play_id",                "name",
-                                "phase", "ego_s_m", "estimated_start_time_s", "detail"};
+const csv::Columns kPlayColumns{"step",    "time_s",  "play_id",          "name",           "phase",
+                                "ego_s_m", "estimated_start_time_s", "actors", "created", "cleared",
+                                "position_error_m", "speed_error_mps", "detail"};
 const csv::Columns kCommandColumns{"step",       "time_s",     "vehicle_id",    "play_id", "mode",
                                    "speed_mps",  "accel_mps2", "decel_mps2",    "max_jerk_mps3", "lane",
                                    "force_lane", "lane_change_duration_s", "indicator"};
@@ -81,7 +82,7 @@ void add_handoff(csv::LineWriter& l, const HandoffRow& x) {
 
 void add_play(csv::LineWriter& l, const PlayRow& x) {
   l.add(x.step).add(x.time_s).add(x.play_id).add(x.name).add(x.phase).add(x.ego_s_m).add(x.estimated_start_time_s);
-  l.add(x.detail);
+  l.add(x.actors).add(x.created).add(x.cleared).add(x.position_error_m).add(x.speed_error_mps).add(x.detail);
 }
 
 void add_command(csv::LineWriter& l, const CommandRow& x) {
@@ -182,6 +183,11 @@ PlayRow read_play(csv::Reader& in) {
   r.phase = in.u32();
   r.ego_s_m = in.number();
   r.estimated_start_time_s = in.number();
+  r.actors = in.u32();
+  r.created = in.u32();
+  r.cleared = in.u32();
+  r.position_error_m = in.number();
+  r.speed_error_mps = in.number();
   r.detail = in.text();
   return r;
 }

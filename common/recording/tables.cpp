@@ -37,8 +37,10 @@ HandoffRow handoff_row(const msg::Handoff& h) {
 }
 
 PlayRow play_row(const msg::PlayStatus& p) {
-  return {p.step(),         p.time_s(),  p.play_id(),  p.name().to_string(), p.phase(), p.ego_s_m(),
-          p.estimated_start_time_s(), p.detail().to_string()};
+  return {p.step(),   p.time_s(),   p.play_id(),          p.name().to_string(),
+          p.phase(),  p.ego_s_m(),  p.estimated_start_time_s(), p.actors(),
+          p.created(), p.cleared(), p.position_error_m(), p.speed_error_mps(),
+          p.detail().to_string()};
 }
 
 const char* control_name(std::uint8_t mode) { return to_string(static_cast<ControlMode>(mode)); }

@@ -73,6 +73,11 @@ struct PlayRow {
   std::uint32_t phase = 0;
   double ego_s_m = 0.0;
   double estimated_start_time_s = 0.0;
+  std::uint32_t actors = 0;
+  std::uint32_t created = 0;
+  std::uint32_t cleared = 0;
+  double position_error_m = 0.0;
+  double speed_error_mps = 0.0;
   std::string detail;
 };
 

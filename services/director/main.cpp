@@ -24,6 +24,11 @@ msg::PlayStatus to_msg(const director::PlayReport& r, Step k, double time_s) {
   m.trigger1_s_m(r.trigger1_s_m);
   m.trigger2_s_m(r.trigger2_s_m);
   m.estimated_start_time_s(r.estimated_start_time_s);
+  m.actors(r.actors);
+  m.created(r.created);
+  m.cleared(r.cleared);
+  m.position_error_m(r.position_error_m);
+  m.speed_error_mps(r.speed_error_mps);
   m.detail(r.detail.substr(0, 160));
   return m;
 }
@@ -31,10 +36,10 @@ msg::PlayStatus to_msg(const director::PlayReport& r, Step k, double time_s) {
 int run(const dds::ServiceContext& ctx) {
   dds::Shell shell(ctx);
   const auto plays = shell.node.writer<msg::PlayStatusPubSubType>(dds::Topic::kPlayStatus);
-  // The director's commands to its actors and the vehicles it creates (handed to meso): the writers
-  // exist, so that every reader matches them, before the core produces any (issue 5).
-  [[maybe_unused]] const auto commands = shell.node.writer<msg::ActorCommandPubSubType>(dds::Topic::kActorCommand);
-  [[maybe_unused]] const auto handoffs = shell.node.writer<msg::HandoffPubSubType>(dds::Topic::kHandoff);
+  // The director's commands to its actors and the vehicles it creates (handed to meso).
+  const auto commands = shell.node.writer<msg::ActorCommandPubSubType>(dds::Topic::kActorCommand);
+  const auto handoffs = shell.node.writer<msg::HandoffPubSubType>(dds::Topic::kHandoff);
+  const Road road(ctx.scenario.config.road);
   if (!shell.discover(ctx)) return 1;
 
   director::DirectorCore core(ctx.scenario.config, ctx.seed);
@@ -57,6 +62,14 @@ int run(const dds::ServiceContext& ctx) {
           if (!r.detail.empty()) spdlog::info("play \"{}\": {}: {}", r.name, director::to_string(r.phase), r.detail);
           ++written[static_cast<std::size_t>(dds::Topic::kPlayStatus)];
         }
+        for (const ActorCommand& c : out.commands) {
+          commands.write(dds::to_msg(c, ego.time_s));
+          ++written[static_cast<std::size_t>(dds::Topic::kActorCommand)];
+        }
+        for (const Handoff& h : out.births) {
+          handoffs.write(dds::to_msg(h, ego.time_s, road));
+          ++written[static_cast<std::size_t>(dds::Topic::kHandoff)];
+        }
         shell.status.set_counters(shell.inbox.bad_samples(), 0);
         return written;
       },
@@ -70,7 +83,7 @@ int run(const dds::ServiceContext& ctx) {
 int main(int argc, char** argv) {
   return entourage::dds::service_main(
       argc, argv, entourage::ServiceId{entourage::Role::kDirector, 0},
-      "The event director: follows the scenario's plays and reports their progress as the ego passes their "
-      "trigger points.",
+      "The event director: prepares the scenario's plays (casts vehicles as actors, moves them into place), "
+      "hands them over to the script at trigger point 2, releases them afterwards, and reports each play's progress.",
       nullptr, entourage::run);
 }

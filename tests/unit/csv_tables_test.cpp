@@ -73,7 +73,7 @@ Tables sample() {
   }
   t.handoffs.push_back({1, 0.1, 7, 1, "generator", "micro", "inner", "initial_fill", 0, 1100.0 / 3.0, 30.0});
   t.handoffs.push_back({3, 0.30000000000000004, 7, 2, "micro", "none", "outside", "left_window", 0, 2e5, 0.0});
-  t.plays.push_back({2, 0.2, 1, "lead vehicle brakes", 7, 1300.5, -1.0, "outcome: braked, \"hard\""});
+  t.plays.push_back({2, 0.2, 1, "lead vehicle brakes", 7, 1300.5, -1.0, 2, 1, 3, -7.25, 1.0 / 3.0, "outcome: braked, \"hard\""});
   t.commands.push_back({2, 0.2, 4000000000U, 1, "controlled", 1.0 / 3.0, 2.5, 7.25, 1e-3, -1, true, 0.0, 2});
   t.commands.push_back({3, 0.30000000000000004, 7, 1, "releasing", 0.0, 1.0, 1.0, 2.0, 15, false, 3.5, 0});
   return t;
