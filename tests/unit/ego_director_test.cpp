@@ -143,7 +143,17 @@ TEST(EgoCore, KnowsWhenTheRoadEnds) {
 
 TEST(DirectorCore, ReportsEveryPlayFirstThenItsTriggerPoints) {
   ScenarioConfig sc = minimal_scenario();
-  sc.plays = {{1, "brake", 2000.0, 2600.0}, {2, "cut-in", 5000.0, 5500.0}};
+  PlayConfig brake;
+  brake.id = 1;
+  brake.name = "brake";
+  brake.trigger1_s_m = 2000.0;
+  brake.trigger2_s_m = 2600.0;
+  PlayConfig cut_in;
+  cut_in.id = 2;
+  cut_in.name = "cut-in";
+  cut_in.trigger1_s_m = 5000.0;
+  cut_in.trigger2_s_m = 5500.0;
+  sc.plays = {brake, cut_in};
   director::DirectorCore core(sc);
   EgoObservation ego = testing::ego_at(0, 1000.0, 30.0);
   auto r = core.step(ego);
