@@ -1,5 +1,8 @@
 #include "scenario/resolve.hpp"
 
+#include <cstdint>
+#include <string>
+
 #include "behaviour/gipps.hpp"
 #include "core/units.hpp"
 #include "scenario/scenario.pb.h"
@@ -171,6 +174,91 @@ EgoConfig resolve_ego(const Ego& e) {
   return c;
 }
 
+int vehicle_type_index(const Scenario& s, const std::string& name) {
+  for (int i = 0; i < s.vehicle_type_size(); ++i) {
+    if (s.vehicle_type(i).name() == name) return i;
+  }
+  return -1;
+}
+
+PlayRoleConfig resolve_role(const Role& r, const Scenario& s) {
+  PlayRoleConfig c;
+  c.name = r.name();
+  c.type_index = r.has_type() ? vehicle_type_index(s, r.type()) : -1;
+  c.direction = direction_of(r.direction());
+  c.lane_offset = r.lane_offset();
+  c.ahead_m = r.ahead_m();
+  c.absolute_speed = r.speed_case() == Role::kSpeedKph;
+  c.speed_mps = kph_to_mps(c.absolute_speed ? r.speed_kph() : r.speed_offset_kph());
+  c.position_tolerance_m = r.position_tolerance_m();
+  c.speed_tolerance_mps = kph_to_mps(r.speed_tolerance_kph());
+  return c;
+}
+
+int role_index(const Play& p, const std::string& name) {
+  for (int i = 0; i < p.role_size(); ++i) {
+    if (p.role(i).name() == name) return i;
+  }
+  return -1;
+}
+
+PlayActionConfig resolve_action(const Action& a, const Play& p) {
+  PlayActionConfig c;
+  c.role = role_index(p, a.role());
+  c.at_s = a.at_s();
+  c.when_gap_below_m = a.has_when_gap_below_m() ? a.when_gap_below_m() : -1.0;
+  c.when_ttc_below_s = a.has_when_ttc_below_s() ? a.when_ttc_below_s() : -1.0;
+  switch (a.kind_case()) {
+    case Action::kLaneChange:
+      c.kind = PlayActionKind::kLaneChange;
+      c.lane_offset = a.lane_change().lane_offset();
+      c.polite = a.lane_change().polite();
+      c.duration_s = a.lane_change().has_duration_s() ? a.lane_change().duration_s() : 0.0;
+      break;
+    case Action::kIndicator:
+      c.kind = PlayActionKind::kIndicator;
+      c.indicator = static_cast<std::uint8_t>(a.indicator().side());  // OFF 0, LEFT 1, RIGHT 2 as in config
+      break;
+    case Action::kSpeed:
+    case Action::KIND_NOT_SET: {  // refused by validation
+      const SpeedAction& sp = a.speed();
+      c.kind = PlayActionKind::kSpeed;
+      c.absolute_speed = sp.target_case() != SpeedAction::kSpeedOffsetKph;
+      c.speed_mps = kph_to_mps(c.absolute_speed ? sp.speed_kph() : sp.speed_offset_kph());
+      c.rate_mps2 = sp.rate_mps2();
+      break;
+    }
+  }
+  return c;
+}
+
+PlayConfig resolve_play(const Play& p, const Scenario& s, std::uint32_t id) {
+  PlayConfig c;
+  c.id = id;
+  c.name = p.name();
+  c.trigger1_s_m = p.trigger1_s_m();
+  c.trigger2_s_m = p.trigger2_s_m();
+  for (const auto& r : p.role()) c.roles.push_back(resolve_role(r, s));
+  for (const auto& a : p.action()) c.actions.push_back(resolve_action(a, p));
+  for (const auto& z : p.clear()) c.clear.push_back({z.lane_offset(), z.from_m(), z.to_m()});
+  c.end_after_s = p.end().after_s();
+  c.end_ego_beyond_s_m = p.end().has_ego_beyond_s_m() ? p.end().ego_beyond_s_m() : -1.0;
+  c.release_s = p.release_s();
+  return c;
+}
+
+DirectorConfig resolve_director(const Director& d) {
+  DirectorConfig c;
+  c.accel_memory_s = d.accel_memory_s();
+  c.max_speed_offset_mps = kph_to_mps(d.max_speed_offset_kph());
+  c.min_speed_mps = kph_to_mps(d.min_speed_kph());
+  c.approach_time_s = d.approach_time_s();
+  c.max_jerk_mps3 = d.max_jerk_mps3();
+  c.lane_change_cost_mps = kph_to_mps(d.lane_change_cost_kph());
+  c.hidden_margin_m = d.hidden_margin_m();
+  return c;
+}
+
 }  // namespace
 
 ScenarioConfig resolve(const Scenario& s) {
@@ -197,14 +285,8 @@ ScenarioConfig resolve(const Scenario& s) {
   c.demand_regulation_gain = s.demand().regulation_gain();
   c.ego = resolve_ego(s.ego());
   std::uint32_t id = 1;
-  for (const auto& p : s.play()) {
-    PlayConfig play;
-    play.id = id++;
-    play.name = p.name();
-    play.trigger1_s_m = p.trigger1_s_m();
-    play.trigger2_s_m = p.trigger2_s_m();
-    c.plays.push_back(play);
-  }
+  for (const auto& p : s.play()) c.plays.push_back(resolve_play(p, s, id++));
+  c.director = resolve_director(s.director());
   c.speed_adaptation = resolve_speed_adaptation(s.speed_adaptation());
   c.overtaking = resolve_overtaking(s.overtaking());
   return c;

@@ -8,6 +8,7 @@
 #include "scenario/scenario.pb.h"
 #include "scenario/validate_cursor.hpp"
 #include "scenario/validate_models.hpp"
+#include "scenario/validate_plays.hpp"
 
 namespace entourage::scenario {
 
@@ -205,24 +206,6 @@ void check_ego(const Cursor& top, const Scenario& s) {
   }
 }
 
-void check_plays(const Cursor& c, const Scenario& s) {
-  std::set<std::string> names;
-  for (int i = 0; i < s.play_size(); ++i) {
-    const Play& p = s.play(i);
-    const Cursor pc = c.child(p, "play", i);
-    if (p.name().empty()) {
-      pc.fail("name", "is required");
-    } else if (!names.insert(p.name()).second) {
-      pc.fail("name", "\"" + p.name() + "\" is defined twice");
-    }
-    const bool both = pc.require("trigger1_s_m") & pc.require("trigger2_s_m");
-    if (!both) continue;
-    pc.range("trigger1_s_m", p.trigger1_s_m(), 0.0, s.road().length_m());
-    pc.range("trigger2_s_m", p.trigger2_s_m(), 0.0, s.road().length_m());
-    if (p.trigger2_s_m() <= p.trigger1_s_m()) pc.fail("trigger2_s_m", "must lie beyond trigger1_s_m");
-  }
-}
-
 }  // namespace
 
 void validate(const Scenario& s, const TextFormat::ParseInfoTree& tree, const std::string& path,
@@ -234,7 +217,8 @@ void validate(const Scenario& s, const TextFormat::ParseInfoTree& tree, const st
   const auto types = check_vehicle_types(top, s);
   check_demand(top, s, types);
   if (s.has_road()) check_ego(top, s);
-  check_plays(top, s);
+  detail::check_plays(top, s);
+  detail::check_director(top, s);
   detail::check_speed_adaptation(top, s);
   detail::check_overtaking(top, s);
 }
