@@ -265,7 +265,7 @@ TEST(CsvTables, BrokenQuotingIsRefused) {
   const std::string dir = exported("quoting");
   const std::string row = line_of(dir + "/plays.csv", 2);
   replace_line(dir + "/plays.csv", 2, row.substr(0, row.size() - 1));  // the closing quote of detail
-  EXPECT_EQ(refusal(dir), dir + "/plays.csv:2:8: detail: a quoted field is not closed on its line");
+  EXPECT_EQ(refusal(dir), dir + "/plays.csv:2:13: detail: a quoted field is not closed on its line");
   replace_line(dir + "/plays.csv", 2, "2,0.2,1,\"lead\" vehicle,7,1300.5,-1,x");
   EXPECT_EQ(refusal(dir), dir + "/plays.csv:2:4: name: a quoted field goes on after its closing quote");
   replace_line(dir + "/plays.csv", 2, "2,0.2,1,lead \"vehicle\",7,1300.5,-1,x");
