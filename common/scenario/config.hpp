@@ -126,6 +126,14 @@ struct FlowConfig {
   std::vector<double> type_shares;  // per vehicle type index, normalised to sum 1 (all 0 if no flow)
 };
 
+// The ego stand-in slows down (to a standstill by default) at its comfortable deceleration from
+// at_s, holds at most speed_mps for duration_s once it got there, then drives on.
+struct EgoStopConfig {
+  double at_s = 0.0;
+  double duration_s = 0.0;
+  double speed_mps = 0.0;
+};
+
 struct EgoDriverConfig {
   bool use_speed_profile = false;
   double desired_speed_mps = 110.0 / 3.6;
@@ -136,7 +144,7 @@ struct EgoDriverConfig {
   bool lane_changes = true;
   double politeness = 0.2;
   std::vector<std::pair<double, double>> profile;  // (s_m, speed_mps), increasing s
-  std::vector<std::pair<double, double>> stops;    // (at_s, duration_s), increasing at_s
+  std::vector<EgoStopConfig> stops;                // increasing at_s
 };
 
 struct EgoConfig {

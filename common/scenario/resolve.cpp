@@ -166,7 +166,7 @@ EgoConfig resolve_ego(const Ego& e) {
   c.driver.min_gap_m = d.min_gap_m();
   c.driver.lane_changes = d.lane_changes();
   c.driver.politeness = d.politeness();
-  for (const auto& st : d.stop()) c.driver.stops.emplace_back(st.at_s(), st.duration_s());
+  for (const auto& st : d.stop()) c.driver.stops.push_back({st.at_s(), st.duration_s(), st.speed_kph() / 3.6});
   if (e.has_speed_profile()) {
     c.driver.use_speed_profile = true;
     for (const auto& p : e.speed_profile().point()) c.driver.profile.emplace_back(p.s_m(), kph_to_mps(p.speed_kph()));

@@ -182,6 +182,10 @@ void check_ego(const Cursor& top, const Scenario& s) {
       const Cursor sc = dc.child(d.stop(i), "stop", i);
       sc.range("at_s", d.stop(i).at_s(), 0.0, s.duration_s());
       sc.range("duration_s", d.stop(i).duration_s(), 0.0, 86400.0);
+      if (d.stop(i).speed_kph() >= d.desired_speed_kph()) {
+        sc.fail("speed_kph", "must be below the driver's desired_speed_kph (" + std::to_string(d.desired_speed_kph()) + ")");
+      }
+      sc.range("speed_kph", d.stop(i).speed_kph(), 0.0, 250.0);
       if (i > 0 && d.stop(i).at_s() <= d.stop(i - 1).at_s()) sc.fail("at_s", "stops must have increasing at_s");
     }
   }

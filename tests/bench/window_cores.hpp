@@ -1,7 +1,8 @@
 #pragma once
 // The services' pure cores wired together in one process, in lockstep, as the DDS shells wire
 // them (common/dds/region_shell.hpp, services/ego/main.cpp), without DDS, threads or clocks: the
-// ego stand-in, the generator, micro and one meso instance serving both outer regions.
+// ego stand-in, the generator, micro, one meso instance serving both outer regions, and the
+// director (whose step a caller may skip when the scenario has no plays).
 //
 // Step k: the ego moves to k seeing the world published for k-1; the generator, micro and meso
 // each compute k from the same input (the ego at k and k-1, every vehicle published for k-1 in id
@@ -13,6 +14,8 @@
 #include <vector>
 
 #include "core/random.hpp"
+#include "dds/convert.hpp"
+#include "director/core/director_core.hpp"
 #include "ego/core/ego_core.hpp"
 #include "generator/core/generator_core.hpp"
 #include "meso/core/meso_core.hpp"
@@ -32,49 +35,35 @@ inline std::uint64_t generator_seed(std::uint64_t run_seed) {
   return Random::derived(run_seed, static_cast<std::uint64_t>(Role::kGenerator)).next_u64();
 }
 
-// A vehicle state as the other services receive it (dds::to_msg, then dds::from_msg).
-inline ObservedVehicle as_observed(const VehicleReport& r, ServiceId owner, Step step, const Road& road) {
-  const Vehicle& v = r.vehicle;
-  ObservedVehicle o;
-  o.id = v.id;
-  o.owner = owner;
-  o.step = step;
-  o.direction = v.direction;
-  o.lane = v.lane;
-  o.target_lane = v.target_lane();
-  o.type_index = v.type_index;
-  o.s_m = v.s_m;
-  o.d_m = lateral_offset_m(road, v);
-  o.speed_mps = v.speed_mps;
-  o.accel_mps2 = v.accel_mps2;
-  o.length_m = v.length_m;
-  o.width_m = v.width_m;
-  return o;
+// A vehicle state, a handoff and a command as their receivers get them: through the messages
+// the DDS shells send (common/dds/convert.cpp), so whatever a message does not carry is lost here
+// too (e.g. the overtaking state and the HDM's memory of a handed-over vehicle).
+inline ObservedVehicle as_observed(const VehicleReport& r, ServiceId owner, Step step, double time_s, const Road& road) {
+  return dds::from_msg(dds::to_msg(r, owner, step, time_s, road));
 }
-
-// A handoff as its receiver gets it: the message carries neither the overtaking state nor the
-// HDM's memory of past decisions (dds::from_msg leaves them at their defaults).
-inline Handoff as_received(Handoff h) {
-  h.vehicle.overtaking = OvertakingState{};
-  h.vehicle.hdm_memory = HdmMemory{};
-  return h;
+inline Handoff as_received(const Handoff& h, double time_s, const Road& road) {
+  return dds::from_msg(dds::to_msg(h, time_s, road));
 }
+inline ActorCommand as_received(const ActorCommand& c, double time_s) { return dds::from_msg(dds::to_msg(c, time_s)); }
 
-// What the three region-level cores computed for one step.
+// What the cores computed for one step.
 struct StepOutputs {
   StepOutput generator;
   StepOutput micro;
   StepOutput meso;
+  director::DirectorOutput director;
 };
 
 class WindowCores {
  public:
   WindowCores(const ScenarioConfig& scenario, std::uint64_t run_seed)
       : road_(scenario.road),
-        ego_(scenario),
+        ego_(scenario, run_seed),
         generator_(scenario, generator_seed(run_seed)),
         micro_(scenario, kMicroService),
-        meso_(scenario, kMesoService) {}
+        meso_(scenario, kMesoService),
+        director_(scenario, run_seed),
+        step_s_(scenario.step_s) {}
 
   // The input of the next step: the ego moved on (seeing the world of the previous step), the
   // world and the handoffs published at the previous step. Step 0 starts the run.
@@ -88,17 +77,33 @@ class WindowCores {
       in.ego_prev = ego_prev_;
       in.world_prev = world_;
       in.handoffs = handoffs_;
+      in.commands = commands_;
     }
     return in;
+  }
+
+  // The director's step for `in` (it sees the same ego and world as the region cores).
+  director::DirectorOutput direct(const StepInput& in) {
+    director::DirectorInput d;
+    d.step = in.step;
+    d.ego = in.ego;
+    d.world = in.world_prev;
+    return director_.step(d);
   }
 
   // Publishes what the cores computed for `in` as the world and handoffs of its step.
   void publish(const StepInput& in, const StepOutputs& out) {
     world_.clear();
     handoffs_.clear();
-    add(out.generator, kGeneratorService, in.step);
-    add(out.micro, kMicroService, in.step);
-    add(out.meso, kMesoService, in.step);
+    commands_.clear();
+    const double time_s = static_cast<double>(in.step) * step_s_;
+    add(out.generator, kGeneratorService, in.step, time_s);
+    add(out.micro, kMicroService, in.step, time_s);
+    add(out.meso, kMesoService, in.step, time_s);
+    for (const Handoff& h : out.director.births) handoffs_.push_back(as_received(h, time_s, road_));
+    for (const ActorCommand& c : out.director.commands) commands_.push_back(as_received(c, time_s));
+    std::stable_sort(commands_.begin(), commands_.end(),
+                     [](const ActorCommand& a, const ActorCommand& b) { return a.vehicle < b.vehicle; });
     std::sort(world_.begin(), world_.end(),
               [](const ObservedVehicle& a, const ObservedVehicle& b) { return a.id < b.id; });
     ego_prev_ = in.ego;
@@ -108,13 +113,15 @@ class WindowCores {
   generator::GeneratorCore& generator() { return generator_; }
   micro::MicroCore& micro() { return micro_; }
   meso::MesoCore& meso() { return meso_; }
+  director::DirectorCore& director() { return director_; }
+  const std::vector<ObservedVehicle>& world() const { return world_; }
   // Past the end of the road (with room for the window ahead): a run must stop here.
   bool at_road_end() const { return ego_.at_road_end(); }
 
  private:
-  void add(const StepOutput& out, ServiceId owner, Step step) {
-    for (const VehicleReport& r : out.states) world_.push_back(as_observed(r, owner, step, road_));
-    for (const Handoff& h : out.handoffs) handoffs_.push_back(as_received(h));
+  void add(const StepOutput& out, ServiceId owner, Step step, double time_s) {
+    for (const VehicleReport& r : out.states) world_.push_back(as_observed(r, owner, step, time_s, road_));
+    for (const Handoff& h : out.handoffs) handoffs_.push_back(as_received(h, time_s, road_));
   }
 
   Road road_;
@@ -122,10 +129,13 @@ class WindowCores {
   generator::GeneratorCore generator_;
   micro::MicroCore micro_;
   meso::MesoCore meso_;
+  director::DirectorCore director_;
+  double step_s_;
   Step next_step_ = 0;
   EgoObservation ego_prev_;
   std::vector<ObservedVehicle> world_;  // published for the previous step, in id order
   std::vector<Handoff> handoffs_;       // sent at the previous step
+  std::vector<ActorCommand> commands_;  // written by the director at the previous step
 };
 
 }  // namespace entourage::bench

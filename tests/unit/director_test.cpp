@@ -119,8 +119,15 @@ TEST(Casting, AVehicleThatCannotReachTheSlotInTimeOrMustPassTheEgoOnOneLaneCanno
   // With two lanes it can, at the cost of the lane changes.
   const CastingSituation two{world, ego, 40.0, 3000.0, Lanes{2, 0}};
   EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], world[1], two, cfg)));
-  // A vehicle between vehicle 1 and the slot on one lane blocks it.
-  world.push_back(vehicle(4, 2500.0, 22.0));
+  // A slow vehicle ahead of vehicle 1 that it would have to get past on one lane blocks it (at
+  // 10 m/s it is at 2900 m when vehicle 1 should be at 3040 m); a fast one that stays ahead, or
+  // that would overtake vehicle 1, does not.
+  std::vector<ObservedVehicle> with_fast = world;
+  with_fast.push_back(vehicle(4, 2500.0, 22.0));
+  with_fast.push_back(vehicle(5, 2100.0, 30.0));
+  const CastingSituation fine{with_fast, ego, 40.0, 3000.0, Lanes{1, 1}};
+  EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], world[0], fine, cfg)));
+  world.push_back(vehicle(6, 2500.0, 10.0));
   const CastingSituation blocked{world, ego, 40.0, 3000.0, Lanes{1, 1}};
   EXPECT_EQ(casting_cost(slot, play.roles[0], world[0], blocked, cfg), kInf);
 }

@@ -59,9 +59,11 @@ double casting_cost(const Slot& slot, const PlayRoleConfig& role, const Observed
   const SpeedPlan plan = plan_speed(v.speed_mps, slot.speed_mps, at.time_to_start_s,
                                     sign(slot.direction) * (slot.s_m - v.s_m), transport_band(slot, cfg), kPlanRate_mps2);
   if (std::abs(plan.shortfall_m) > kCastingSlack * role.position_tolerance_m) return kInf;
-  const Between b = between(slot, v.id, v.s_m, at.world, at.ego, at.ego_s_at_handover_m);
+  const Between b = between(slot, v.id, v.s_m, at.time_to_start_s, at.world, at.ego, at.ego_s_at_handover_m);
   const bool one_lane = at.lanes.of(slot.direction) <= 1;
-  if (one_lane && (b.ego || b.vehicles > 0)) return kInf;  // actors do not overtake
+  // On one lane actors do not overtake; faster vehicles may still overtake them (the ego is the
+  // driver's to decide: its order must not depend on it).
+  if (one_lane && (b.ego || b.to_pass > 0)) return kInf;
   const int lane_changes = std::abs(v.lane - slot.lane) + b.vehicles + (b.ego ? 1 : 0);
   return std::abs(plan.cruise_mps - v.speed_mps) + cfg.lane_change_cost_mps * lane_changes;
 }
@@ -118,8 +120,8 @@ std::optional<Placement> hidden_placement(const Slot& slot, double length_m, con
       const double needed = needed_speed_mps(slot, s, t);
       if (!band.contains(needed)) continue;
       if (one_lane) {
-        const Between b = between(slot, kNoVehicle, s, at.world, at.ego, at.ego_s_at_handover_m);
-        if (b.ego || b.vehicles > 0) continue;
+        const Between b = between(slot, kNoVehicle, s, t, at.world, at.ego, at.ego_s_at_handover_m);
+        if (b.ego || b.to_pass > 0) continue;
       }
       if (!gap_is_free(slot, s, length_m, needed, at)) continue;
       const double cost = std::abs(needed - slot.speed_mps);

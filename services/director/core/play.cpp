@@ -11,7 +11,7 @@ namespace entourage::director {
 
 namespace {
 // A new start-time estimate is reported when it moves by more than this.
-constexpr double kEstimateReportThreshold_s = 0.5;
+constexpr double kEstimateReportThreshold_s = 1.0;
 // Casting is retried this often while a role has no actor.
 constexpr double kCastInterval_s = 1.0;
 // Transport progress (the errors) is reported this often.
@@ -118,9 +118,20 @@ PlayOutput PlayRun::step(const PlayInput& in) {
   const int dir = sign(in.ego.direction);
   const PlayPhase before = phase_;
   std::string detail;
-  if (phase_ == PlayPhase::kWaiting && x >= dir * play_.trigger1_s_m) {
+  if (phase_ == PlayPhase::kWaiting && x >= dir * play_.trigger1_s_m && x < dir * play_.trigger2_s_m) {
+    // Preparing starts with the first estimate; casting at the next step.
     phase_ = PlayPhase::kPreparing;
-    detail = "trigger point 1 passed";
+    const Prediction pred = estimator_.predict(dir * (play_.trigger2_s_m - in.ego.s_m));
+    estimated_start_s_ = pred.time_s < 0.0 ? -1.0 : in.ego.time_s + pred.time_s;
+    report(in, out, "trigger point 1 passed");
+    first_report_ = false;
+    return out;
+  }
+  if (phase_ == PlayPhase::kWaiting && x >= dir * play_.trigger2_s_m) {
+    phase_ = PlayPhase::kFailed;
+    report(in, out, "the ego was beyond trigger point 2 before the play could be prepared");
+    first_report_ = false;
+    return out;
   }
   switch (phase_) {
     case PlayPhase::kPreparing:
@@ -163,7 +174,8 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
     return;
   }
   estimated_start_s_ = in.ego.time_s + pred.time_s;
-  const std::vector<Slot> slots = slots_of(play_, in.ego.direction, in.ego.lane, pred.speed_mps, setting_.lanes);
+  // The lane the ego is in, or moving to.
+  const std::vector<Slot> slots = slots_of(play_, in.ego.direction, in.ego.target_lane, pred.speed_mps, setting_.lanes);
   // Actors that left the world (beyond the window) are lost: their roles are cast again.
   for (Role& r : roles_) {
     if (r.actor == kNoVehicle || find(in, r.actor) != nullptr) continue;
@@ -172,9 +184,10 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
     r = Role{};
   }
   const bool uncast = std::any_of(roles_.begin(), roles_.end(), [](const Role& r) { return r.actor == kNoVehicle; });
+  std::string cast_detail;
   if (uncast && in.ego.time_s - last_cast_attempt_s_ >= kCastInterval_s - 1e-9) {
     last_cast_attempt_s_ = in.ego.time_s;
-    cast(in, slots, pred.time_s, out);
+    cast_detail = cast(in, slots, pred.time_s, out);
   }
   const bool all_cast = std::none_of(roles_.begin(), roles_.end(), [](const Role& r) { return r.actor == kNoVehicle; });
   if (all_cast && phase_ == PlayPhase::kPreparing) {
@@ -184,9 +197,10 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
   }
   move_actors(in, slots, pred.time_s, out);
   clear_zones(in, slots, pred.time_s, out);
+  if (!cast_detail.empty()) report(in, out, "cast: " + cast_detail);
 }
 
-void PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
+std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
   // Only the roles still without an actor are cast; the others keep theirs.
   std::vector<std::size_t> open;
   PlayConfig sub = play_;
@@ -225,7 +239,7 @@ void PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, double t
     out.created.push_back(std::move(v));
     out.created_regions.push_back(place->region);
   }
-  if (!detail.empty()) report(in, out, "cast: " + detail);
+  return detail;
 }
 
 void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
@@ -245,7 +259,7 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
 
 void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
   if (play_.clear.empty()) return;
-  const std::vector<ZoneAtStart> zones = zones_of(play_, in.ego.direction, in.ego.lane, setting_.lanes);
+  const std::vector<ZoneAtStart> zones = zones_of(play_, in.ego.direction, in.ego.target_lane, setting_.lanes);
   std::vector<int> role_lanes;
   for (const Slot& s : slots) {
     if (s.direction == in.ego.direction) role_lanes.push_back(s.lane);

@@ -109,7 +109,8 @@ class PlayRun {
   };
 
   void prepare(const PlayInput& in, PlayOutput& out);
-  void cast(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out);
+  // Casts the roles without an actor; returns what it did ("" for nothing).
+  std::string cast(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out);
   void move_actors(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out);
   void clear_zones(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out);
   void hand_over(const PlayInput& in, PlayOutput& out);

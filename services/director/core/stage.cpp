@@ -81,18 +81,20 @@ bool occupies(const ObservedVehicle& v, Direction dir, int lane) {
   return v.direction == dir && (v.lane == lane || v.target_lane == lane);
 }
 
-Between between(const Slot& slot, VehicleId self, double s_m, const std::vector<ObservedVehicle>& world,
+Between between(const Slot& slot, VehicleId self, double s_m, double time_s, const std::vector<ObservedVehicle>& world,
                 const EgoObservation& ego, double ego_s_at_handover_m) {
   const int dir = sign(slot.direction);
-  const double from = dir * s_m;
-  const double to = dir * slot.s_m;
-  const double lo = std::min(from, to);
-  const double hi = std::max(from, to);
+  const double p_now = dir * s_m;
+  const double p_then = dir * slot.s_m;
   Between b;
   for (const ObservedVehicle& v : world) {
     if (v.id == self || !occupies(v, slot.direction, slot.lane)) continue;
-    const double p = dir * v.s_m;
-    if (p > lo && p < hi) ++b.vehicles;
+    const double q_now = dir * v.s_m;
+    const double q_then = q_now + v.speed_mps * time_s;
+    if ((q_now > p_now) != (q_then > p_then)) {
+      ++b.vehicles;
+      if (q_now > p_now) ++b.to_pass;
+    }
   }
   // The ego moves too: what counts is whether the vehicle's order relative to it changes between
   // now and the handover (the ego at trigger point 2 then, where the slots are measured from).
@@ -100,6 +102,7 @@ Between between(const Slot& slot, VehicleId self, double s_m, const std::vector<
     const double ahead_now = dir * (s_m - ego.s_m);
     const double ahead_then = dir * (slot.s_m - ego_s_at_handover_m);
     b.ego = (ahead_now > 0.0) != (ahead_then > 0.0);
+    b.pass_ego = b.ego && ahead_now < 0.0;
   }
   return b;
 }

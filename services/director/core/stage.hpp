@@ -65,14 +65,17 @@ struct SpeedPlan {
 SpeedPlan plan_speed(double v0_mps, double v_final_mps, double time_s, double distance_m, const SpeedBand& band,
                      double rate_mps2);
 
-// What stands between a vehicle at `s_m` and its slot: the vehicles now in the slot's lane
-// between the two positions (it must get past them), and whether its order relative to the ego
-// must change by the handover (the ego then at `ego_s_at_handover_m`).
+// What stands between a vehicle at `s_m` and its slot `time_s` from now: the vehicles in the
+// slot's lane whose order relative to it must change (ahead of it now and, driving on at their
+// speed, behind the slot then, or the other way round: it must get past them or let them pass),
+// and whether its order relative to the ego must change (the ego then at `ego_s_at_handover_m`).
 struct Between {
-  int vehicles = 0;
-  bool ego = false;
+  int vehicles = 0;   // whose order changes either way
+  int to_pass = 0;    // of which it must get past (ahead of it now, behind it then)
+  bool ego = false;   // its order relative to the ego changes
+  bool pass_ego = false;  // it must get past the ego
 };
-Between between(const Slot& slot, VehicleId self, double s_m, const std::vector<ObservedVehicle>& world,
+Between between(const Slot& slot, VehicleId self, double s_m, double time_s, const std::vector<ObservedVehicle>& world,
                 const EgoObservation& ego, double ego_s_at_handover_m);
 
 // Does `v` occupy `lane` of direction `dir` (its lane or, while changing, its target lane)?

@@ -76,12 +76,12 @@ double EgoCore::profile_speed_mps(double s_m) const {
 
 bool EgoCore::stopping(double t_s) {
   const auto& stops = scenario_.ego.driver.stops;
-  if (next_stop_ >= stops.size() || t_s < stops[next_stop_].first) return false;
+  if (next_stop_ >= stops.size() || t_s < stops[next_stop_].at_s) return false;
   if (standing_since_s_ < 0.0) {
-    if (self_.speed_mps <= 0.0) standing_since_s_ = t_s;
+    if (self_.speed_mps <= stops[next_stop_].speed_mps) standing_since_s_ = t_s;
     return true;
   }
-  if (t_s - standing_since_s_ < stops[next_stop_].second) return true;
+  if (t_s - standing_since_s_ < stops[next_stop_].duration_s) return true;
   ++next_stop_;  // stood long enough: drive on
   standing_since_s_ = -1.0;
   return false;
@@ -108,9 +108,12 @@ EgoObservation EgoCore::step(Step step, const std::vector<ObservedVehicle>& worl
     d = decide(self_, index_, env_);
   }
   if (stopping(static_cast<double>(step) * dt)) {
-    // Brake comfortably (harder if the model asks), start no lane change, stand.
+    // Brake comfortably (harder if the model asks) down to the stop's speed, then hold it (stand
+    // for a standstill); start no lane change.
     const double brake_mps2 = -self_.driver.car_following.idm.comfort_decel_mps2;
-    d.accel_mps2 = self_.speed_mps > 0.0 ? std::min(d.accel_mps2, brake_mps2) : 0.0;
+    const double hold_mps = scenario_.ego.driver.stops[next_stop_].speed_mps;
+    d.accel_mps2 = self_.speed_mps > hold_mps ? std::min(d.accel_mps2, brake_mps2)
+                                              : std::min(d.accel_mps2, std::max(brake_mps2, (hold_mps - self_.speed_mps) / dt));
     if (!self_.lane_change.active()) d.lane_change = self_.lane_change;
     if (!self_.overtaking.active()) d.overtaking = self_.overtaking;
   }

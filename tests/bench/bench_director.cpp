@@ -1,0 +1,170 @@
+// entourage-bench-director: each shipped play run many times in lockstep (every core in one
+// process, play_runs.hpp) with varied ego drivers and traffic seeds; prints the success rate, the
+// errors at the handover, the start-time estimate's error, how hard actors drove while being moved
+// into place against the autonomous vehicles of the same runs, where vehicles were created, and
+// overlaps.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cli/args.hpp"
+#include "play_runs.hpp"
+#include "scenario/loader.hpp"
+
+namespace entourage {
+namespace {
+
+double mean(const std::vector<double>& x) {
+  if (x.empty()) return 0.0;
+  double s = 0.0;
+  for (double v : x) s += v;
+  return s / static_cast<double>(x.size());
+}
+
+double percentile(std::vector<double> x, double q) {
+  if (x.empty()) return 0.0;
+  std::sort(x.begin(), x.end());
+  const auto i = static_cast<std::size_t>(std::ceil(q * static_cast<double>(x.size())) - 1.0);
+  return x[std::min(i, x.size() - 1)];
+}
+
+// The failure's first reason without numbers, so equal causes group together.
+std::string cause_of(const std::string& detail) {
+  std::string c = detail.substr(0, detail.find(';'));
+  const auto colon = c.find(": ", c.find("met: ") == std::string::npos ? 0 : c.find("met: ") + 5);
+  std::string out;
+  for (char ch : c.substr(0, colon == std::string::npos ? c.size() : colon + 2)) {
+    if (!(std::isdigit(static_cast<unsigned char>(ch)) || ch == '.' || ch == '-')) out += ch;
+  }
+  return out;
+}
+
+void print_play(const std::string& name, const std::vector<bench::PlayRunResult>& runs,
+                const std::vector<bench::EgoVariant>& variants) {
+  std::vector<double> pos, speed, est, a_acc, a_dec, a_jerk, o_acc, o_dec, o_jerk;
+  int ok = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
+  std::map<std::string, int> causes;
+  std::map<std::string, std::pair<int, int>> by_variant;  // ok, runs
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const bench::PlayRunResult& r = runs[i];
+    auto& bv = by_variant[bench::to_string(variants[i])];
+    ++bv.second;
+    if (r.handed_over) {
+      ++ok;
+      ++bv.first;
+    } else {
+      ++causes[r.failure.empty() ? std::string("never reached trigger point 2") : cause_of(r.failure)];
+    }
+    pos.push_back(std::abs(r.position_error_m));
+    speed.push_back(std::abs(r.speed_error_mps));
+    est.push_back(std::abs(r.estimate_error_s));
+    if (r.actors.vehicle_steps > 0) {
+      a_acc.push_back(r.actors.max_accel_mps2);
+      a_dec.push_back(r.actors.max_decel_mps2);
+      a_jerk.push_back(r.actors.max_jerk_mps3);
+    }
+    o_acc.push_back(r.autonomous.max_accel_mps2);
+    o_dec.push_back(r.autonomous.max_decel_mps2);
+    o_jerk.push_back(r.autonomous.max_jerk_mps3);
+    created += r.created;
+    in_view += r.created_in_view;
+    overlaps_actor += r.overlaps_with_actor;
+    overlaps_other += r.overlaps_other;
+    ego_contacts += r.ego_contacts_with_actor;
+  }
+  const double n = static_cast<double>(runs.size());
+  std::printf("\n== %s: %zu runs ==\n", name.c_str(), runs.size());
+  std::printf("success                        %d / %zu (%.1f %%)", ok, runs.size(), 100.0 * ok / n);
+  for (const auto& [v, c] : by_variant) std::printf("   %s %d/%d", v.c_str(), c.first, c.second);
+  std::printf("\n");
+  for (const auto& [c, k] : causes) std::printf("  failed %3d x  %s\n", k, c.c_str());
+  std::printf("handover position error (m)    mean %.2f   p95 %.2f   (largest over the roles)\n", mean(pos), percentile(pos, 0.95));
+  std::printf("handover speed error (km/h)    mean %.2f   p95 %.2f\n", 3.6 * mean(speed), 3.6 * percentile(speed, 0.95));
+  std::printf("start-time estimate at trigger 1, |error| (s): mean %.2f   p95 %.2f\n", mean(est), percentile(est, 0.95));
+  std::printf("while being moved into place (inner region), per run largest: median / p95 / max\n");
+  std::printf("  actors      accel %.2f / %.2f / %.2f m/s2   decel %.2f / %.2f / %.2f m/s2   jerk %.1f / %.1f / %.1f m/s3\n",
+              percentile(a_acc, 0.5), percentile(a_acc, 0.95), percentile(a_acc, 1.0), percentile(a_dec, 0.5),
+              percentile(a_dec, 0.95), percentile(a_dec, 1.0), percentile(a_jerk, 0.5), percentile(a_jerk, 0.95),
+              percentile(a_jerk, 1.0));
+  std::printf("  autonomous  accel %.2f / %.2f / %.2f m/s2   decel %.2f / %.2f / %.2f m/s2   jerk %.1f / %.1f / %.1f m/s3\n",
+              percentile(o_acc, 0.5), percentile(o_acc, 0.95), percentile(o_acc, 1.0), percentile(o_dec, 0.5),
+              percentile(o_dec, 0.95), percentile(o_dec, 1.0), percentile(o_jerk, 0.5), percentile(o_jerk, 0.95),
+              percentile(o_jerk, 1.0));
+  std::printf("vehicles created               %d   of which inside the view: %d\n", created, in_view);
+  std::printf("overlapping pairs              with an actor %d   autonomous only %d   ego touching an actor %d\n",
+              overlaps_actor, overlaps_other, ego_contacts);
+}
+
+int run(int argc, char** argv) {
+  std::string scenario_path;
+  int runs = 50;
+  std::uint64_t seed = 1;
+  bool verbose = false;
+  bool plain = false;
+  cli::Args args("entourage-bench-director",
+                 "Runs each shipped play many times in lockstep (every core in one process) with varied ego drivers "
+                 "and traffic seeds, and prints success, handover errors, the actors' driving against the "
+                 "autonomous vehicles', creations and overlaps.");
+  args.option("scenario", "FILE", "one scenario with a play (default: the four shipped play scenarios)", &scenario_path);
+  args.option("runs", "N", "runs per play (default 50)", &runs);
+  args.option("seed", "N", "first traffic seed; run i uses seed + i (default 1)", &seed);
+  args.flag("verbose", "one line per run as well", &verbose);
+  args.flag("plain", "the scenario's own ego driver in every run (only the traffic seed varies)", &plain);
+  if (!args.parse(argc, argv)) {
+    std::cerr << "entourage-bench-director: " << args.error() << "\n" << args.usage();
+    return 2;
+  }
+  if (args.help_requested()) {
+    std::cout << args.usage();
+    return 0;
+  }
+  if (runs < 1 || runs > 100000) {
+    std::cerr << "entourage-bench-director: --runs wants a number from 1 to 100000\n";
+    return 2;
+  }
+  std::vector<std::string> paths;
+  if (scenario_path.empty()) {
+    for (const char* f : {"freeway_lead_brakes", "freeway_cut_in", "freeway_stopped_vehicle", "rural_slow_truck"}) {
+      paths.push_back(std::string(ENTOURAGE_SOURCE_DIR) + "/scenarios/" + f + ".pbtxt");
+    }
+  } else {
+    paths = {scenario_path};
+  }
+  for (const std::string& path : paths) {
+    const auto loaded = scenario::load_file(path);
+    if (!loaded.ok()) {
+      for (const auto& p : loaded.problems) std::cerr << p.to_string() << "\n";
+      return 2;
+    }
+    if (loaded.config.plays.empty()) {
+      std::cerr << "entourage-bench-director: " << path << " has no play\n";
+      return 2;
+    }
+    std::vector<bench::PlayRunResult> results;
+    std::vector<bench::EgoVariant> variants;
+    for (int i = 0; i < runs; ++i) {
+      const std::uint64_t s = seed + static_cast<std::uint64_t>(i);
+      bench::EgoVariant v{};
+      const ScenarioConfig sc = plain ? loaded.config : bench::vary_ego(loaded.config, i, s, &v);
+      results.push_back(bench::run_play(sc, s));
+      variants.push_back(v);
+      if (verbose) {
+        const bench::PlayRunResult& r = results.back();
+        std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s created %d  %s\n", i,
+                    static_cast<unsigned long long>(s), bench::to_string(v), director::to_string(r.final_phase),
+                    r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s, r.created, r.failure.c_str());
+      }
+    }
+    print_play(loaded.config.plays.front().name + " (" + loaded.config.name + ")", results, variants);
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace entourage
+
+int main(int argc, char** argv) { return entourage::run(argc, argv); }

@@ -1,0 +1,149 @@
+#include "play_runs.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <set>
+#include <utility>
+
+namespace entourage::bench {
+
+namespace {
+constexpr double kDesiredSpreadKph = 15.0;
+constexpr double kBrakeToShare = 0.6;
+constexpr double kBrakeHold_s = 6.0;
+constexpr double kEagerPoliteness = 0.0;
+// After the play has ended (or failed) the run goes on this long, for the release.
+constexpr double kAfterEnd_s = 2.0;
+
+bool occupies(const ObservedVehicle& v, int lane) { return v.lane == lane || v.target_lane == lane; }
+
+bool share_lane(const ObservedVehicle& a, const ObservedVehicle& b) {
+  return a.direction == b.direction && (occupies(b, a.lane) || occupies(b, a.target_lane));
+}
+
+double bumper_gap_m(const ObservedVehicle& a, const ObservedVehicle& b) {
+  return std::abs(a.s_m - b.s_m) - 0.5 * (a.length_m + b.length_m);
+}
+}  // namespace
+
+const char* to_string(EgoVariant v) {
+  switch (v) {
+    case EgoVariant::kSteady: return "steady";
+    case EgoVariant::kBrakes: return "brakes";
+    case EgoVariant::kChangesLane: return "changes lane";
+  }
+  return "?";
+}
+
+ScenarioConfig vary_ego(ScenarioConfig sc, int index, std::uint64_t seed, EgoVariant* variant) {
+  const auto v = static_cast<EgoVariant>(index % 3);
+  if (variant != nullptr) *variant = v;
+  Random rng = Random::derived(seed, 0xE60ULL);
+  EgoDriverConfig& d = sc.ego.driver;
+  d.desired_speed_mps = std::max(40.0 / 3.6, d.desired_speed_mps + rng.uniform(-kDesiredSpreadKph, kDesiredSpreadKph) / 3.6);
+  sc.ego.start_speed_mps = -1.0;
+  if (!sc.plays.empty() && v == EgoVariant::kBrakes) {
+    // Halfway between the trigger points at its desired speed.
+    const PlayConfig& p = sc.plays.front();
+    const double mid_s = 0.5 * (p.trigger1_s_m + p.trigger2_s_m);
+    const double at_s = (mid_s - sc.ego.start_s_m) / d.desired_speed_mps;
+    d.stops.clear();
+    d.stops.push_back({at_s, kBrakeHold_s, kBrakeToShare * d.desired_speed_mps});
+  } else if (v == EgoVariant::kChangesLane) {
+    d.lane_changes = true;
+    d.politeness = kEagerPoliteness;
+    d.desired_speed_mps += kDesiredSpreadKph / 3.6;  // faster than most: it passes them
+  }
+  return sc;
+}
+
+PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed) {
+  PlayRunResult r;
+  WindowCores cores(sc, seed);
+  const double dt = sc.step_s;
+  const Step last = sc.steps();
+  std::map<VehicleId, std::pair<Step, double>> last_accel;  // micro-owned vehicles: (step, accel)
+  std::set<std::pair<VehicleId, VehicleId>> overlapping;     // pairs seen overlapping (each counted once)
+  std::set<VehicleId> ego_contacts;
+  double first_estimate_s = -1.0;
+  double end_time_s = -1.0;
+  for (Step k = 0; k <= last && !cores.at_road_end(); ++k) {
+    StepInput in = cores.next_input();
+    StepOutputs out;
+    out.generator = cores.generator().step(in);
+    out.micro = cores.micro().step(in);
+    out.meso = cores.meso().step(in);
+    out.director = cores.direct(in);
+    const WindowBounds w = WindowBounds::around(in.ego.s_m, sc.window);
+    for (const Handoff& h : out.director.births) {
+      ++r.created;
+      if (w.in_inner(h.vehicle.s_m)) ++r.created_in_view;
+    }
+    for (const director::PlayReport& rep : out.director.reports) {
+      if (rep.play_id != sc.plays.front().id) continue;
+      if (std::getenv("ENTOURAGE_PLAY_TRACE") != nullptr) {
+        std::fprintf(stderr, "t %.1f ego %.0f v %.1f lane %d %s est %.1f pos %.1f spd %.1f %s\n", in.ego.time_s, in.ego.s_m,
+                     in.ego.speed_mps, in.ego.lane, director::to_string(rep.phase), rep.estimated_start_time_s,
+                     rep.position_error_m, rep.speed_error_mps, rep.detail.c_str());
+      }
+      r.final_phase = rep.phase;
+      if (rep.phase == director::PlayPhase::kPreparing && first_estimate_s < 0.0 && rep.estimated_start_time_s >= 0.0) {
+        first_estimate_s = rep.estimated_start_time_s;
+      }
+      if (rep.phase == director::PlayPhase::kHandedOver || (rep.phase == director::PlayPhase::kFailed && !r.handed_over &&
+                                                             r.failure.empty())) {
+        r.position_error_m = rep.position_error_m;
+        r.speed_error_mps = rep.speed_error_mps;
+        if (first_estimate_s >= 0.0) r.estimate_error_s = first_estimate_s - in.ego.time_s;
+      }
+      if (rep.phase == director::PlayPhase::kHandedOver) r.handed_over = true;
+      if (rep.phase == director::PlayPhase::kFailed) r.failure = rep.detail;
+      if ((rep.phase == director::PlayPhase::kDone || rep.phase == director::PlayPhase::kFailed) && end_time_s < 0.0) {
+        end_time_s = in.ego.time_s + sc.plays.front().release_s + kAfterEnd_s;
+      }
+    }
+    // How vehicles in the inner region drove (micro-owned, consecutive steps), and overlaps.
+    const bool preparing = r.final_phase == director::PlayPhase::kPreparing || r.final_phase == director::PlayPhase::kCast ||
+                           r.final_phase == director::PlayPhase::kTransporting;
+    const std::vector<ObservedVehicle>& world = in.world_prev;  // published for k - 1
+    for (const ObservedVehicle& v : world) {
+      if (v.owner.role != Role::kMicro) {
+        last_accel.erase(v.id);
+        continue;
+      }
+      auto it = last_accel.find(v.id);
+      if (it != last_accel.end() && it->second.first + 1 == v.step && preparing) {
+        const double jerk = (v.accel_mps2 - it->second.second) / dt;
+        if (v.control == ControlMode::kTransported) {
+          r.actors.add(v.accel_mps2, jerk);
+        } else if (v.control == ControlMode::kAutonomous) {
+          r.autonomous.add(v.accel_mps2, jerk);
+        }
+      }
+      last_accel[v.id] = {v.step, v.accel_mps2};
+    }
+    for (std::size_t i = 0; i < world.size(); ++i) {
+      const ObservedVehicle& a = world[i];
+      if (!w.in_inner(a.s_m)) continue;
+      for (std::size_t j = i + 1; j < world.size(); ++j) {
+        const ObservedVehicle& b = world[j];
+        if (!share_lane(a, b) || bumper_gap_m(a, b) >= 0.0) continue;
+        if (!overlapping.insert({a.id, b.id}).second) continue;
+        const bool actor = a.control != ControlMode::kAutonomous || b.control != ControlMode::kAutonomous;
+        ++(actor ? r.overlaps_with_actor : r.overlaps_other);
+      }
+      if (in.ego_prev && a.control != ControlMode::kAutonomous && a.direction == in.ego_prev->direction &&
+          (occupies(a, in.ego_prev->lane) || occupies(a, in.ego_prev->target_lane)) &&
+          std::abs(a.s_m - in.ego_prev->s_m) - 0.5 * (a.length_m + in.ego_prev->length_m) < 0.0 &&
+          ego_contacts.insert(a.id).second) {
+        ++r.ego_contacts_with_actor;
+      }
+    }
+    cores.publish(in, out);
+    r.steps = k;
+    if (end_time_s >= 0.0 && in.ego.time_s >= end_time_s) break;
+  }
+  return r;
+}
+
+}  // namespace entourage::bench

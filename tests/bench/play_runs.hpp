@@ -1,0 +1,61 @@
+#pragma once
+// One run of a scenario's first play with every core in one process (window_cores.hpp), in
+// lockstep, and what it measured: the outcome, the errors at the handover, how the actors drove
+// while they were moved into place against the autonomous vehicles around them, where vehicles
+// were created, and whether any vehicle overlapped another. Used by entourage-bench-director and
+// by the tests that assert the shipped plays.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "window_cores.hpp"
+
+namespace entourage::bench {
+
+// How the ego stand-in drives in a run: the scenario's driver at a varied desired speed, one who
+// brakes (to 60 % of its speed for 6 s) in the middle of the preparation, or one who changes lane
+// (or overtakes) readily.
+enum class EgoVariant : std::uint8_t { kSteady = 0, kBrakes = 1, kChangesLane = 2 };
+const char* to_string(EgoVariant v);
+
+// The scenario as run `index` of a series drives it: variant index % 3, desired speed spread
+// +-15 km/h around the scenario's by a draw from `seed`.
+ScenarioConfig vary_ego(ScenarioConfig sc, int index, std::uint64_t seed, EgoVariant* variant);
+
+struct MotionExtremes {
+  double max_accel_mps2 = 0.0;
+  double max_decel_mps2 = 0.0;  // positive
+  double max_jerk_mps3 = 0.0;   // |da/dt|
+  std::uint64_t vehicle_steps = 0;
+  void add(double accel_mps2, double jerk_mps3) {
+    max_accel_mps2 = std::max(max_accel_mps2, accel_mps2);
+    max_decel_mps2 = std::max(max_decel_mps2, -accel_mps2);
+    max_jerk_mps3 = std::max(max_jerk_mps3, std::abs(jerk_mps3));
+    ++vehicle_steps;
+  }
+};
+
+struct PlayRunResult {
+  director::PlayPhase final_phase = director::PlayPhase::kWaiting;
+  bool handed_over = false;
+  std::string failure;               // the failed report's detail
+  double position_error_m = 0.0;     // at the handover, the largest over the roles
+  double speed_error_mps = 0.0;
+  double estimate_error_s = 0.0;     // first estimate (trigger point 1) - actual handover time
+  MotionExtremes actors;             // while transported, in the inner region (micro)
+  MotionExtremes autonomous;         // the autonomous vehicles of the inner region, same steps
+  int created = 0;
+  int created_in_view = 0;           // born inside the inner region: must be 0
+  int overlaps_with_actor = 0;       // vehicle pairs overlapping where one is an actor
+  int overlaps_other = 0;            // any other overlapping pair (autonomous traffic)
+  int ego_contacts_with_actor = 0;   // the ego overlapping an actor (the ego may crash)
+  Step steps = 0;
+};
+
+PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed);
+
+}  // namespace entourage::bench

@@ -1,0 +1,69 @@
+// The shipped plays with every core in one process, in lockstep (tests/bench/play_runs.hpp, the
+// director bench's runs): on fixed traffic seeds the play is handed over and runs to its end, and
+// on every run the director causes no overlap, creates nothing inside the driver's view, and
+// reaches a verdict (done, or failed with the reason).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "play_runs.hpp"
+#include "scenario/loader.hpp"
+
+namespace entourage::bench {
+namespace {
+
+ScenarioConfig shipped(const std::string& name) {
+  const auto loaded = scenario::load_file(std::string(ENTOURAGE_SOURCE_DIR) + "/scenarios/" + name + ".pbtxt");
+  EXPECT_TRUE(loaded.ok()) << name;
+  return loaded.config;
+}
+
+void expect_safe(const PlayRunResult& r, const std::string& what) {
+  EXPECT_EQ(r.overlaps_with_actor, 0) << what;
+  EXPECT_EQ(r.created_in_view, 0) << what;
+  EXPECT_TRUE(r.final_phase == director::PlayPhase::kDone || r.final_phase == director::PlayPhase::kFailed)
+      << what << ": ended in " << director::to_string(r.final_phase);
+  if (r.final_phase == director::PlayPhase::kFailed) {
+    EXPECT_FALSE(r.failure.empty()) << what;
+  }
+}
+
+struct Case {
+  std::string scenario;
+  std::uint64_t seed;
+};
+
+class PlaySucceeds : public ::testing::TestWithParam<Case> {};
+
+TEST_P(PlaySucceeds, IsHandedOverWithinToleranceAndRunsToItsEnd) {
+  const Case& c = GetParam();
+  const PlayRunResult r = run_play(shipped(c.scenario), c.seed);
+  expect_safe(r, c.scenario);
+  EXPECT_TRUE(r.handed_over) << r.failure;
+  EXPECT_EQ(r.final_phase, director::PlayPhase::kDone);
+  EXPECT_GT(r.actors.vehicle_steps, 0U) << "an actor was moved in the inner region";
+}
+
+INSTANTIATE_TEST_SUITE_P(Shipped, PlaySucceeds,
+                         ::testing::Values(Case{"freeway_lead_brakes", 2}, Case{"freeway_lead_brakes", 3},
+                                           Case{"freeway_cut_in", 5}, Case{"freeway_stopped_vehicle", 5}),
+                         [](const ::testing::TestParamInfo<Case>& p) {
+                           return p.param.scenario + "_seed" + std::to_string(p.param.seed);
+                         });
+
+class PlayIsSafe : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(PlayIsSafe, NoOverlapNoCreationInViewAndAVerdictWithVariedDrivers) {
+  for (int i = 0; i < 3; ++i) {  // a steady driver, one who brakes while it is prepared, a lane changer
+    EgoVariant v{};
+    const ScenarioConfig sc = vary_ego(shipped(GetParam()), i, 100 + static_cast<std::uint64_t>(i), &v);
+    expect_safe(run_play(sc, 100 + static_cast<std::uint64_t>(i)), GetParam() + " " + to_string(v));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Shipped, PlayIsSafe,
+                         ::testing::Values("freeway_lead_brakes", "freeway_cut_in", "freeway_stopped_vehicle",
+                                           "rural_slow_truck"));
+
+}  // namespace
+}  // namespace entourage::bench
