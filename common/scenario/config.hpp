@@ -223,7 +223,7 @@ struct DirectorConfig {
   double accel_memory_s = 5.0;          // start-time estimate: how long the ego's acceleration lasts
   double max_speed_offset_mps = 8.0;    // transport: at most this far from the speed at the start
   double min_speed_mps = 5.0;           // transport: never slower (except a role's own start speed)
-  double approach_time_s = 6.0;         // transport: the position error closes no faster than this
+  double transport_rate_mps2 = 0.7;     // transport: speed changes are planned at this rate
   double max_jerk_mps3 = 2.0;           // actors' acceleration rises no faster than this
   double lane_change_cost_mps = 2.0;    // casting: cost of each lane change, as a speed change
   double hidden_margin_m = 50.0;        // created vehicles: at least this far beyond the inner region

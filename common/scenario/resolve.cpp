@@ -252,7 +252,7 @@ DirectorConfig resolve_director(const Director& d) {
   c.accel_memory_s = d.accel_memory_s();
   c.max_speed_offset_mps = kph_to_mps(d.max_speed_offset_kph());
   c.min_speed_mps = kph_to_mps(d.min_speed_kph());
-  c.approach_time_s = d.approach_time_s();
+  c.transport_rate_mps2 = d.transport_rate_mps2();
   c.max_jerk_mps3 = d.max_jerk_mps3();
   c.lane_change_cost_mps = kph_to_mps(d.lane_change_cost_kph());
   c.hidden_margin_m = d.hidden_margin_m();

@@ -350,7 +350,7 @@ void check_director(const Cursor& top, const Scenario& s) {
   c.range("accel_memory_s", d.accel_memory_s(), 0.0, 60.0, true);
   c.range("max_speed_offset_kph", d.max_speed_offset_kph(), 0.0, kMaxSpeed_kph, true);
   c.range("min_speed_kph", d.min_speed_kph(), 0.0, kMaxSpeed_kph);
-  c.range("approach_time_s", d.approach_time_s(), 1.0, 60.0);
+  c.range("transport_rate_mps2", d.transport_rate_mps2(), 0.0, 3.0, true);
   c.range("max_jerk_mps3", d.max_jerk_mps3(), 0.0, 20.0, true);
   c.range("lane_change_cost_kph", d.lane_change_cost_kph(), 0.0, kMaxSpeed_kph, true);
   c.range("hidden_margin_m", d.hidden_margin_m(), 0.0, 10000.0, true);

@@ -94,7 +94,7 @@ director {
   accel_memory_s: 4
   max_speed_offset_kph: 36
   min_speed_kph: 7.2
-  approach_time_s: 10
+  transport_rate_mps2: 0.5
   max_jerk_mps3: 3
   lane_change_cost_kph: 10.8
   hidden_margin_m: 80
@@ -186,7 +186,7 @@ TEST(ScenarioPlays, AFullPlayResolvesToSiValues) {
   EXPECT_DOUBLE_EQ(dc.accel_memory_s, 4.0);
   EXPECT_NEAR(dc.max_speed_offset_mps, 10.0, 1e-12);
   EXPECT_NEAR(dc.min_speed_mps, 2.0, 1e-12);
-  EXPECT_DOUBLE_EQ(dc.approach_time_s, 10.0);
+  EXPECT_DOUBLE_EQ(dc.transport_rate_mps2, 0.5);
   EXPECT_DOUBLE_EQ(dc.max_jerk_mps3, 3.0);
   EXPECT_NEAR(dc.lane_change_cost_mps, 3.0, 1e-12);
   EXPECT_DOUBLE_EQ(dc.hidden_margin_m, 80.0);
@@ -199,7 +199,7 @@ TEST(ScenarioPlays, DirectorDefaultsAreTheSchemas) {
   EXPECT_DOUBLE_EQ(dc.accel_memory_s, 5.0);
   EXPECT_NEAR(dc.max_speed_offset_mps, 29.0 * kKph, 1e-12);
   EXPECT_NEAR(dc.min_speed_mps, 5.0, 1e-12);
-  EXPECT_DOUBLE_EQ(dc.approach_time_s, 6.0);
+  EXPECT_DOUBLE_EQ(dc.transport_rate_mps2, 0.7);
   EXPECT_DOUBLE_EQ(dc.max_jerk_mps3, 2.0);
   EXPECT_NEAR(dc.lane_change_cost_mps, 2.0, 1e-12);
   EXPECT_DOUBLE_EQ(dc.hidden_margin_m, 50.0);
@@ -356,7 +356,7 @@ TEST(ScenarioPlays, EachMistakeIsRefusedWithTheFieldNamed) {
       {"no acceleration memory", "director { accel_memory_s: 0 }\n", "director.accel_memory_s", "got 0"},
       {"zero speed offset", "director { max_speed_offset_kph: 0 }\n", "director.max_speed_offset_kph", "got 0"},
       {"negative minimum speed", "director { min_speed_kph: -5 }\n", "director.min_speed_kph", "got -5"},
-      {"hasty approach", "director { approach_time_s: 0.5 }\n", "director.approach_time_s", "[1, 60] (got 0.5)"},
+      {"hasty transport", "director { transport_rate_mps2: 4 }\n", "director.transport_rate_mps2", "(got 4)"},
       {"zero jerk", "director { max_jerk_mps3: 0 }\n", "director.max_jerk_mps3", "(0, 20] (got 0)"},
       {"harsh jerk", "director { max_jerk_mps3: 25 }\n", "director.max_jerk_mps3", "got 25"},
       {"free lane changes", "director { lane_change_cost_kph: 0 }\n", "director.lane_change_cost_kph", "got 0"},

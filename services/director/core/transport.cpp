@@ -50,7 +50,8 @@ TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, doubl
   const int dir = sign(slot.direction);
   const double t = std::max(time_left_s, 0.0);
   const SpeedPlan plan =
-      plan_speed(actor.speed_mps, slot.speed_mps, t, dir * (slot.s_m - actor.s_m), transport_band(slot, cfg), kPlanRate_mps2);
+      plan_speed(actor.speed_mps, slot.speed_mps, t, dir * (slot.s_m - actor.s_m), transport_band(slot, cfg),
+                 cfg.transport_rate_mps2);
   TransportCommand c;
   c.position_error_m = plan.shortfall_m;
   c.speed_error_mps = actor.speed_mps - slot.speed_mps;

@@ -4,7 +4,8 @@
 // model aims for (traffic/actor_control.hpp); the model keeps it safe and smooth.
 //
 // Speed: each step the actor's way to the slot is planned again (stage.hpp, plan_speed): change
-// to a cruise speed, cruise, change to the slot's speed just in time, at kPlanRate. The actor is
+// to a cruise speed, cruise, change to the slot's speed just in time, at the director's transport
+// rate. The actor is
 // given the cruise speed as its desired speed, then the slot's speed once the final change is
 // due; the desired speed moves by at most kCommandRate per second, so the driver model eases into
 // it instead of jumping (the plan's rate is lower than that, for the driver's lag).
@@ -24,10 +25,9 @@
 
 namespace entourage::director {
 
-// How fast the desired speed given to an actor may change.
+// How fast the desired speed given to an actor may change (above the plan's rate,
+// DirectorConfig::transport_rate_mps2, which leaves room for the driver's lag).
 inline constexpr double kCommandRate_mps2 = 1.0;
-// The rate of speed changes the transport plans with.
-inline constexpr double kPlanRate_mps2 = 0.7;
 
 struct TransportCommand {
   double speed_mps = 0.0;     // desired speed for the actor
