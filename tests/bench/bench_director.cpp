@@ -105,6 +105,7 @@ int run(int argc, char** argv) {
   std::uint64_t seed = 1;
   bool verbose = false;
   bool plain = false;
+  bool trace = false;
   cli::Args args("entourage-bench-director",
                  "Runs each shipped play many times in lockstep (every core in one process) with varied ego drivers "
                  "and traffic seeds, and prints success, handover errors, the actors' driving against the "
@@ -113,6 +114,7 @@ int run(int argc, char** argv) {
   args.option("runs", "N", "runs per play (default 50)", &runs);
   args.option("seed", "N", "first traffic seed; run i uses seed + i (default 1)", &seed);
   args.flag("verbose", "one line per run as well", &verbose);
+  args.flag("trace", "every play report of every run as well (to stderr)", &trace);
   args.flag("plain", "the scenario's own ego driver in every run (only the traffic seed varies)", &plain);
   if (!args.parse(argc, argv)) {
     std::cerr << "entourage-bench-director: " << args.error() << "\n" << args.usage();
@@ -150,7 +152,7 @@ int run(int argc, char** argv) {
       const std::uint64_t s = seed + static_cast<std::uint64_t>(i);
       bench::EgoVariant v{};
       const ScenarioConfig sc = plain ? loaded.config : bench::vary_ego(loaded.config, i, s, &v);
-      results.push_back(bench::run_play(sc, s));
+      results.push_back(bench::run_play(sc, s, trace ? stderr : nullptr));
       variants.push_back(v);
       if (verbose) {
         const bench::PlayRunResult& r = results.back();

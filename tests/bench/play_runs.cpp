@@ -1,7 +1,5 @@
 #include "play_runs.hpp"
 
-#include <cstdio>
-#include <cstdlib>
 #include <set>
 #include <utility>
 
@@ -57,7 +55,7 @@ ScenarioConfig vary_ego(ScenarioConfig sc, int index, std::uint64_t seed, EgoVar
   return sc;
 }
 
-PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed) {
+PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* trace) {
   PlayRunResult r;
   WindowCores cores(sc, seed);
   const double dt = sc.step_s;
@@ -81,8 +79,8 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed) {
     }
     for (const director::PlayReport& rep : out.director.reports) {
       if (rep.play_id != sc.plays.front().id) continue;
-      if (std::getenv("ENTOURAGE_PLAY_TRACE") != nullptr) {
-        std::fprintf(stderr, "t %.1f ego %.0f v %.1f lane %d %s est %.1f pos %.1f spd %.1f %s\n", in.ego.time_s, in.ego.s_m,
+      if (trace != nullptr) {
+        std::fprintf(trace, "t %.1f ego %.0f v %.1f lane %d %s est %.1f pos %.1f spd %.1f %s\n", in.ego.time_s, in.ego.s_m,
                      in.ego.speed_mps, in.ego.lane, director::to_string(rep.phase), rep.estimated_start_time_s,
                      rep.position_error_m, rep.speed_error_mps, rep.detail.c_str());
       }

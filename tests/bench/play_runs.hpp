@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <string>
 #include <vector>
@@ -56,6 +57,7 @@ struct PlayRunResult {
   Step steps = 0;
 };
 
-PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed);
+// `trace`: if not null, every play report of the run is printed there, one line each.
+PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* trace = nullptr);
 
 }  // namespace entourage::bench
