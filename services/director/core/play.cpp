@@ -18,6 +18,15 @@ constexpr double kCastInterval_s = 1.0;
 constexpr double kProgressReportInterval_s = 1.0;
 // A created vehicle appears in the world state a few steps after its birth: not lost before.
 constexpr Step kBirthGraceSteps = 5;
+// An actor whose plan misses its start by more than this many tolerances, or which is still in
+// another lane this close to the start, for kHopelessFor_s, gives up its role.
+constexpr double kHopelessMiss = 2.0;
+constexpr double kLateLaneChange_s = 8.0;
+constexpr double kHopelessFor_s = 3.0;
+// In the last this many seconds before the start, vehicles beside a clear zone (within
+// kBesideZone_m of it, where they will be then) keep their lane.
+constexpr double kHoldLanesBefore_s = 15.0;
+constexpr double kBesideZone_m = 30.0;
 
 std::string fmt1(double x) {
   std::ostringstream os;
@@ -70,6 +79,10 @@ const ObservedVehicle* PlayRun::find(const PlayInput& in, VehicleId id) const {
   auto it = std::lower_bound(in.world.begin(), in.world.end(), id,
                              [](const ObservedVehicle& v, VehicleId x) { return v.id < x; });
   return it != in.world.end() && it->id == id ? &*it : nullptr;
+}
+
+bool PlayRun::open(const Role& r, const PlayInput& in) const {
+  return r.actor == kNoVehicle || (r.hopeless_since_s >= 0.0 && in.ego.time_s - r.hopeless_since_s >= kHopelessFor_s);
 }
 
 ActorControl PlayRun::transported(double speed_mps, int lane) const {
@@ -183,7 +196,7 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
     sent_.erase(r.actor);
     r = Role{};
   }
-  const bool uncast = std::any_of(roles_.begin(), roles_.end(), [](const Role& r) { return r.actor == kNoVehicle; });
+  const bool uncast = std::any_of(roles_.begin(), roles_.end(), [&](const Role& r) { return open(r, in); });
   std::string cast_detail;
   if (uncast && in.ego.time_s - last_cast_attempt_s_ >= kCastInterval_s - 1e-9) {
     last_cast_attempt_s_ = in.ego.time_s;
@@ -207,7 +220,7 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, d
   sub.roles.clear();
   std::vector<Slot> sub_slots;
   for (std::size_t r = 0; r < roles_.size(); ++r) {
-    if (roles_[r].actor != kNoVehicle) continue;
+    if (!this->open(roles_[r], in)) continue;
     open.push_back(r);
     sub.roles.push_back(play_.roles[r]);
     sub_slots.push_back(slots[r]);
@@ -219,7 +232,14 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, d
   for (std::size_t k = 0; k < open.size(); ++k) {
     Role& role = roles_[open[k]];
     const PlayRoleConfig& rc = play_.roles[open[k]];
+    // An actor that gives its role up drives on as everyday traffic.
+    auto replace = [&] {
+      if (role.actor == kNoVehicle) return;
+      command(role.actor, ActorControl{}, in.step, out);
+      sent_.erase(role.actor);
+    };
     if (chosen[k] >= 0) {
+      replace();
       const ObservedVehicle& v = in.world[static_cast<std::size_t>(chosen[k])];
       in.available[static_cast<std::size_t>(chosen[k])] = false;
       role = Role{v.id, false, in.step, -1.0, 0.0, 0.0};
@@ -229,6 +249,7 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, d
     const int type = rc.type_index >= 0 ? rc.type_index : 0;
     const auto place = hidden_placement(sub_slots[k], in.factory.length_m(type), at, window, setting_.director);
     if (!place) continue;  // tried again at the next casting
+    replace();
     Vehicle v = in.factory.make(type, sub_slots[k].direction, sub_slots[k].lane, place->s_m, place->speed_mps);
     v.control = transported(place->speed_mps, sub_slots[k].lane);
     sent_[v.id] = v.control;
@@ -253,6 +274,13 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
     role.command_mps = t.speed_mps;
     role.position_error_m = t.position_error_m;
     role.speed_error_mps = t.speed_error_mps;
+    const bool hopeless = std::abs(t.position_error_m) > kHopelessMiss * play_.roles[r].position_tolerance_m ||
+                          (v->lane != slots[r].lane && v->target_lane != slots[r].lane && time_left_s < kLateLaneChange_s);
+    if (!hopeless) {
+      role.hopeless_since_s = -1.0;
+    } else if (role.hopeless_since_s < 0.0) {
+      role.hopeless_since_s = in.ego.time_s;
+    }
     command(role.actor, transported(t.speed_mps, t.lane), in.step, out);
   }
 }
@@ -276,6 +304,23 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, d
     }
     command(v.id, transported(c->speed_mps, c->lane), in.step, out);
   }
+  if (time_left_s > kHoldLanesBefore_s) return;
+  // Shortly before the start, vehicles beside a zone keep their lane (their speed too), so that
+  // none changes into it at the last moment.
+  for (std::size_t i = 0; i < in.world.size(); ++i) {
+    const ObservedVehicle& v = in.world[i];
+    const bool ours = std::find(cleared_.begin(), cleared_.end(), v.id) != cleared_.end();
+    if (ours || !in.available[i] || v.lane != v.target_lane) continue;
+    const double s_then = v.s_m + sign(v.direction) * v.speed_mps * time_left_s;
+    const bool beside = std::any_of(zones.begin(), zones.end(), [&](const ZoneAtStart& z) {
+      return z.direction == v.direction && std::abs(v.lane - z.lane) == 1 && s_then > z.from_s_m - kBesideZone_m &&
+             s_then < z.to_s_m + kBesideZone_m;
+    });
+    if (!beside) continue;
+    cleared_.push_back(v.id);
+    in.available[i] = false;
+    command(v.id, transported(v.speed_mps, v.lane), in.step, out);
+  }
 }
 
 void PlayRun::hand_over(const PlayInput& in, PlayOutput& out) {
@@ -296,14 +341,15 @@ void PlayRun::hand_over(const PlayInput& in, PlayOutput& out) {
     const double speed = std::max(0.0, rc.absolute_speed ? rc.speed_mps : in.ego.speed_mps + rc.speed_mps);
     role.position_error_m = ahead - rc.ahead_m;
     role.speed_error_mps = v->speed_mps - speed;
-    const int lane = rc.direction == Direction::kForward ? in.ego.lane + rc.lane_offset : rc.lane_offset;
+    // The lane the ego is in or moving to, as the slots were planned.
+    const int lane = rc.direction == Direction::kForward ? in.ego.target_lane + rc.lane_offset : rc.lane_offset;
     if (std::abs(role.position_error_m) > rc.position_tolerance_m) {
       problem(rc.name + ": " + fmt1(role.position_error_m) + " m from its start position");
     }
     if (std::abs(role.speed_error_mps) > rc.speed_tolerance_mps) {
       problem(rc.name + ": " + fmt1(role.speed_error_mps * 3.6) + " km/h from its start speed");
     }
-    if (v->lane != lane || v->target_lane != lane) problem(rc.name + ": in lane " + std::to_string(v->lane) + ", not " + std::to_string(lane));
+    if (v->lane != lane && v->target_lane != lane) problem(rc.name + ": in lane " + std::to_string(v->lane) + ", not " + std::to_string(lane));
     ActorControl c;
     c.mode = ControlMode::kControlled;
     c.play_id = play_.id;
@@ -312,7 +358,7 @@ void PlayRun::hand_over(const PlayInput& in, PlayOutput& out) {
     c.max_jerk_mps3 = setting_.director.max_jerk_mps3;
     scripted_[r] = c;
   }
-  const std::vector<ZoneAtStart> zones = zones_of(play_, in.ego.direction, in.ego.lane, setting_.lanes);
+  const std::vector<ZoneAtStart> zones = zones_of(play_, in.ego.direction, in.ego.target_lane, setting_.lanes);
   for (const ObservedVehicle& v : in.world) {
     const bool actor = std::any_of(roles_.begin(), roles_.end(), [&](const Role& r) { return r.actor == v.id; });
     if (actor) continue;

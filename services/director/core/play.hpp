@@ -106,6 +106,7 @@ class PlayRun {
     double command_mps = -1.0;  // the last desired speed given while transporting
     double position_error_m = 0.0;
     double speed_error_mps = 0.0;
+    double hopeless_since_s = -1.0;  // since when its plan misses the start by far (< 0: it does not)
   };
 
   void prepare(const PlayInput& in, PlayOutput& out);
@@ -120,6 +121,9 @@ class PlayRun {
 
   void command(VehicleId id, const ActorControl& c, Step step, PlayOutput& out);
   ActorControl transported(double speed_mps, int lane) const;
+  // A role to cast: without an actor, or with one that has missed its start by far for a while
+  // (the ego changed lane, traffic held it up): it is replaced if a better one is found.
+  bool open(const Role& r, const PlayInput& in) const;
   const ObservedVehicle* find(const PlayInput& in, VehicleId id) const;
   void report(const PlayInput& in, PlayOutput& out, std::string detail);
   double ego_progress(const EgoObservation& ego) const { return sign(ego.direction) * ego.s_m; }
