@@ -106,7 +106,7 @@ TEST(Casting, AVehicleThatCannotReachTheSlotInTimeOrMustPassTheEgoOnOneLaneCanno
   const Slot slot = slots_of(play, Direction::kForward, 0, 25.0, Lanes{1, 1})[0];
   EXPECT_DOUBLE_EQ(slot.s_m, 3040.0);
   std::vector<ObservedVehicle> world = {vehicle(1, 2200.0, 24.0), vehicle(3, 1900.0, 30.0)};
-  const CastingSituation at{world, ego, 40.0, 3000.0, Lanes{1, 1}};
+  const CastingSituation at{world, ego, 40.0, 3000.0, Lanes{1, 1}, {}};
   // Vehicle 1: 840 m in 40 s is 21 m/s on average, ending at 25: it must cruise below 21 (its
   // cost is that change of speed from its 24).
   const double cost = casting_cost(slot, play.roles[0], world[0], at, cfg);
@@ -117,7 +117,7 @@ TEST(Casting, AVehicleThatCannotReachTheSlotInTimeOrMustPassTheEgoOnOneLaneCanno
   // Vehicle 3 is behind the ego and would have to pass it: actors do not overtake on one lane.
   EXPECT_EQ(casting_cost(slot, play.roles[0], world[1], at, cfg), kInf);
   // With two lanes it can, at the cost of the lane changes.
-  const CastingSituation two{world, ego, 40.0, 3000.0, Lanes{2, 0}};
+  const CastingSituation two{world, ego, 40.0, 3000.0, Lanes{2, 0}, {}};
   EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], world[1], two, cfg)));
   // A slow vehicle ahead of vehicle 1 that it would have to get past on one lane blocks it (at
   // 10 m/s it is at 2900 m when vehicle 1 should be at 3040 m); a fast one that stays ahead, or
@@ -125,10 +125,10 @@ TEST(Casting, AVehicleThatCannotReachTheSlotInTimeOrMustPassTheEgoOnOneLaneCanno
   std::vector<ObservedVehicle> with_fast = world;
   with_fast.push_back(vehicle(4, 2500.0, 22.0));
   with_fast.push_back(vehicle(5, 2100.0, 30.0));
-  const CastingSituation fine{with_fast, ego, 40.0, 3000.0, Lanes{1, 1}};
+  const CastingSituation fine{with_fast, ego, 40.0, 3000.0, Lanes{1, 1}, {}};
   EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], world[0], fine, cfg)));
   world.push_back(vehicle(6, 2500.0, 10.0));
-  const CastingSituation blocked{world, ego, 40.0, 3000.0, Lanes{1, 1}};
+  const CastingSituation blocked{world, ego, 40.0, 3000.0, Lanes{1, 1}, {}};
   EXPECT_EQ(casting_cost(slot, play.roles[0], world[0], blocked, cfg), kInf);
 }
 
@@ -141,7 +141,7 @@ TEST(Casting, NewVehiclesAreCreatedOutOfSightWithASafeGap) {
   const Slot slot = slots_of(play, Direction::kForward, 0, 25.0, Lanes{2, 0})[0];
   for (double t : {10.0, 20.0, 30.0, 40.0, 60.0}) {
     std::vector<ObservedVehicle> world;
-    const CastingSituation at{world, ego, t, 3000.0, Lanes{2, 0}};
+    const CastingSituation at{world, ego, t, 3000.0, Lanes{2, 0}, {}};
     const auto place = hidden_placement(slot, 4.5, at, w, cfg);
     if (!place) continue;
     EXPECT_TRUE(place->s_m >= w.inner_front_m + cfg.hidden_margin_m || place->s_m <= w.inner_rear_m - cfg.hidden_margin_m)
@@ -151,13 +151,13 @@ TEST(Casting, NewVehiclesAreCreatedOutOfSightWithASafeGap) {
   // 30 s to go: the ideal place (750 m behind the slot) is in view; the nearest hidden one ahead,
   // 50 m beyond the inner region, needs 19.7 m/s, within the band.
   std::vector<ObservedVehicle> world;
-  const CastingSituation at{world, ego, 30.0, 3000.0, Lanes{2, 0}};
+  const CastingSituation at{world, ego, 30.0, 3000.0, Lanes{2, 0}, {}};
   ASSERT_TRUE(hidden_placement(slot, 4.5, at, w, cfg).has_value());
   const auto free_place = *hidden_placement(slot, 4.5, at, w, cfg);
   EXPECT_DOUBLE_EQ(free_place.s_m, w.inner_front_m + cfg.hidden_margin_m);
   // Occupied there: it moves on to a free place.
   world = {vehicle(9, free_place.s_m + 5.0, 25.0)};
-  const CastingSituation busy{world, ego, 30.0, 3000.0, Lanes{2, 0}};
+  const CastingSituation busy{world, ego, 30.0, 3000.0, Lanes{2, 0}, {}};
   const auto moved = hidden_placement(slot, 4.5, busy, w, cfg);
   ASSERT_TRUE(moved.has_value());
   EXPECT_GT(std::abs(moved->s_m - world[0].s_m), 4.5 + 5.0 + 1.5 * 25.0 - 1e-9);
@@ -176,7 +176,7 @@ TEST(Transport, AnActorTrackingItsCommandReachesTheSlotWithinAMetreAndTheSlotSpe
   double cmd = -1.0;
   double max_accel = 0.0;
   for (double t_left = 40.0; t_left > 0.0; t_left -= dt) {
-    const TransportCommand c = transport(slot, actor, t_left, cmd, dt, {}, ego, Lanes{2, 0}, cfg);
+    const TransportCommand c = transport(slot, actor, t_left, cmd, dt, {}, ego, Lanes{2, 0}, cfg, cfg.transport_rate_mps2);
     cmd = c.speed_mps;
     // A driver reaching its desired speed with a 2 s lag, at most 1.5 m/s^2.
     const double a = std::clamp((cmd - actor.speed_mps) / 2.0, -1.5, 1.5);
@@ -188,7 +188,8 @@ TEST(Transport, AnActorTrackingItsCommandReachesTheSlotWithinAMetreAndTheSlotSpe
   EXPECT_NEAR(actor.speed_mps, slot.speed_mps, 1.0);
   EXPECT_LE(max_accel, 1.0 + 1e-9);
   // Too far ahead and too fast to make it: the plan says by how much it will miss.
-  const TransportCommand miss = transport(slot, vehicle(2, 2300.0, 30.0), 40.0, -1.0, dt, {}, ego, Lanes{2, 0}, cfg);
+  const TransportCommand miss =
+      transport(slot, vehicle(2, 2300.0, 30.0), 40.0, -1.0, dt, {}, ego, Lanes{2, 0}, cfg, cfg.transport_rate_mps2);
   EXPECT_LT(miss.position_error_m, -20.0);
 }
 
@@ -201,11 +202,16 @@ TEST(Transport, AVehicleThatWouldStandInAClearZoneIsSentToTheNextLaneOrOutOfTheZ
   const auto two = clear_out(v, zones_of(play, Direction::kForward, 0, Lanes{2, 0}), 40.0, {0}, Lanes{2, 0}, cfg);
   ASSERT_TRUE(two.has_value());
   EXPECT_EQ(two->lane, 1);
-  const auto one = clear_out(v, zones_of(play, Direction::kForward, 0, Lanes{1, 1}), 40.0, {0}, Lanes{1, 1}, cfg);
-  ASSERT_TRUE(one.has_value());
-  EXPECT_EQ(one->lane, 0);
-  const double s_then = v.s_m + one->speed_mps * 40.0;
+  // Both lanes zones: out by its speed, ahead of the zone or behind it at the start.
+  PlayConfig both = play;
+  both.clear.push_back({1, 5.0, 40.0});
+  const auto out = clear_out(v, zones_of(both, Direction::kForward, 0, Lanes{2, 0}), 40.0, {0}, Lanes{2, 0}, cfg);
+  ASSERT_TRUE(out.has_value());
+  EXPECT_EQ(out->lane, 0);
+  const double s_then = v.s_m + out->speed_mps * 40.0;
   EXPECT_TRUE(s_then > 3040.0 + 2.25 || s_then < 3005.0 - 2.25) << s_then;
+  // On one lane it would have to overtake or be overtaken: left to its own driving.
+  EXPECT_FALSE(clear_out(v, zones_of(play, Direction::kForward, 0, Lanes{1, 1}), 40.0, {0}, Lanes{1, 1}, cfg).has_value());
   EXPECT_FALSE(clear_out(vehicle(2, 2500.0, 25.0), zones_of(play, Direction::kForward, 0, Lanes{2, 0}), 40.0, {0},
                          Lanes{2, 0}, cfg)
                    .has_value());

@@ -58,7 +58,7 @@ double casting_cost(const Slot& slot, const PlayRoleConfig& role, const Observed
   if (v.direction != slot.direction || !type_fits(role, v) || at.time_to_start_s <= 0.0) return kInf;
   const SpeedPlan plan = plan_speed(v.speed_mps, slot.speed_mps, at.time_to_start_s,
                                     sign(slot.direction) * (slot.s_m - v.s_m), transport_band(slot, cfg),
-                                    cfg.transport_rate_mps2);
+                                    transport_rate_mps2(cfg, accel_of(at.type_accel_mps2, v.type_index)));
   if (std::abs(plan.shortfall_m) > kCastingSlack * role.position_tolerance_m) return kInf;
   const Between b = between(slot, v.id, v.s_m, at.time_to_start_s, at.world, at.ego, at.ego_s_at_handover_m);
   const bool one_lane = at.lanes.of(slot.direction) <= 1;

@@ -21,6 +21,7 @@ struct CastingSituation {
   double time_to_start_s = 0.0;     // until the ego reaches trigger point 2 (estimated)
   double ego_s_at_handover_m = 0.0; // trigger point 2
   Lanes lanes;
+  TypeAccels type_accel_mps2;
 };
 
 // The cost of `v` playing a role with start `slot` (infinite: it cannot).

@@ -30,8 +30,10 @@ Vehicle DirectorCore::Factory::make(int type_index, Direction dir, int lane, dou
 
 DirectorCore::DirectorCore(const ScenarioConfig& scenario, std::uint64_t seed)
     : scenario_(scenario), factory_(scenario_, seed) {
+  TypeAccels accels;
+  for (const VehicleTypeConfig& t : scenario_.vehicle_types) accels.push_back(t.driver.max_accel_mps2.mean);
   const PlaySetting setting{scenario_.director, scenario_.window,
-                            Lanes{scenario_.road.lanes_forward, scenario_.road.lanes_backward}};
+                            Lanes{scenario_.road.lanes_forward, scenario_.road.lanes_backward}, accels};
   for (const PlayConfig& p : scenario_.plays) plays_.emplace_back(p, setting);
 }
 

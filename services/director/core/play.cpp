@@ -225,7 +225,7 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, d
     sub.roles.push_back(play_.roles[r]);
     sub_slots.push_back(slots[r]);
   }
-  const CastingSituation at{in.world, in.ego, time_left_s, play_.trigger2_s_m, setting_.lanes};
+  const CastingSituation at{in.world, in.ego, time_left_s, play_.trigger2_s_m, setting_.lanes, setting_.type_accel_mps2};
   const std::vector<int> chosen = cast_roles(sub_slots, sub, in.available, at, setting_.director);
   const WindowBounds window = WindowBounds::around(in.ego.s_m, setting_.window);
   std::string detail;
@@ -269,8 +269,9 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
     if (role.actor == kNoVehicle) continue;
     const ObservedVehicle* v = find(in, role.actor);
     if (v == nullptr) continue;  // a created vehicle not seen yet
+    const double rate = transport_rate_mps2(setting_.director, accel_of(setting_.type_accel_mps2, v->type_index));
     const TransportCommand t = transport(slots[r], *v, time_left_s, role.command_mps, in.dt_s, in.world, in.ego,
-                                         setting_.lanes, setting_.director);
+                                         setting_.lanes, setting_.director, rate);
     role.command_mps = t.speed_mps;
     role.position_error_m = t.position_error_m;
     role.speed_error_mps = t.speed_error_mps;

@@ -86,6 +86,7 @@ struct PlaySetting {
   DirectorConfig director;
   WindowConfig window;
   Lanes lanes;
+  TypeAccels type_accel_mps2;
 };
 
 class PlayRun {

@@ -29,6 +29,11 @@ SpeedBand transport_band(const Slot& slot, const DirectorConfig& cfg) {
   return b;
 }
 
+double transport_rate_mps2(const DirectorConfig& cfg, double type_accel_mps2) {
+  return type_accel_mps2 > 0.0 ? std::min(cfg.transport_rate_mps2, kRateShareOfTypeAccel * type_accel_mps2)
+                               : cfg.transport_rate_mps2;
+}
+
 double needed_speed_mps(const Slot& slot, double s_m, double time_s) {
   return sign(slot.direction) * (slot.s_m - s_m) / std::max(time_s, 1e-3);
 }

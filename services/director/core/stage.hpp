@@ -26,6 +26,12 @@ struct Lanes {
   int of(Direction d) const { return d == Direction::kForward ? forward : backward; }
 };
 
+// The mean maximum acceleration of each vehicle type's drivers (0: unknown).
+using TypeAccels = std::vector<double>;
+inline double accel_of(const TypeAccels& a, std::uint8_t type_index) {
+  return type_index < a.size() ? a[type_index] : 0.0;
+}
+
 // The slots of `play`'s roles when the ego, in `ego_lane`, reaches trigger point 2 at
 // `ego_speed_mps`. Forward means the ego's direction.
 std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int ego_lane, double ego_speed_mps,
@@ -42,6 +48,11 @@ struct SpeedBand {
   double clamp(double v) const { return v < low_mps ? low_mps : (v > high_mps ? high_mps : v); }
 };
 SpeedBand transport_band(const Slot& slot, const DirectorConfig& cfg);
+
+// The rate an actor's speed changes are planned with: the director's, but at most a share of what
+// its type's drivers accelerate at on average (a truck's 0.6 m/s^2 cannot follow a 0.7 plan).
+inline constexpr double kRateShareOfTypeAccel = 0.6;
+double transport_rate_mps2(const DirectorConfig& cfg, double type_accel_mps2);
 
 // The average speed that brings a vehicle at `s_m` to the slot in `time_s` (in its direction).
 double needed_speed_mps(const Slot& slot, double s_m, double time_s);

@@ -46,12 +46,12 @@ bool held_up(const Slot& slot, const ObservedVehicle& actor, double cmd_mps, dou
 
 TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, double time_left_s, double previous_cmd_mps,
                            double dt_s, const std::vector<ObservedVehicle>& world, const EgoObservation& ego,
-                           const Lanes& lanes, const DirectorConfig& cfg) {
+                           const Lanes& lanes, const DirectorConfig& cfg, double rate_mps2) {
   const int dir = sign(slot.direction);
   const double t = std::max(time_left_s, 0.0);
   const SpeedPlan plan =
       plan_speed(actor.speed_mps, slot.speed_mps, t, dir * (slot.s_m - actor.s_m), transport_band(slot, cfg),
-                 cfg.transport_rate_mps2);
+                 rate_mps2);
   TransportCommand c;
   c.position_error_m = plan.shortfall_m;
   c.speed_error_mps = actor.speed_mps - slot.speed_mps;
@@ -106,7 +106,10 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const std::vector<Z
   for (int lane : {v.lane - 1, v.lane + 1}) {  // the right one first
     if (free_lane(lane)) return Clearance{v.speed_mps, lane};
   }
-  if (t <= 0.0) return std::nullopt;
+  // On one lane a vehicle can only get out of a zone ahead of the ego by passing what is ahead of
+  // it, or fall behind the ego by being passed: it is left to its own driving (it overtakes a
+  // slow actor by itself when the oncoming traffic lets it).
+  if (t <= 0.0 || lanes.of(v.direction) <= 1) return std::nullopt;
   // Ahead of the zone or behind it, whichever needs the smaller change of speed.
   const int dir = sign(v.direction);
   const double front_p = dir > 0 ? hit->to_s_m : -hit->from_s_m;

@@ -14,8 +14,9 @@
 // (or past the ego) first takes a neighbouring lane.
 //
 // Clear zones: a vehicle that would be inside a zone at the start (at its present speed) is asked
-// to leave: to a neighbouring lane that is no zone's, or, on one lane, to be ahead of the zone or
-// behind it at the start by a speed within the band around its own.
+// to leave: to a neighbouring lane that is no zone's, or to be ahead of the zone or behind it at
+// the start by a speed within the band around its own (not on one lane per direction: there it
+// would have to overtake or be overtaken, which is left to its own driving).
 
 #include <optional>
 #include <vector>
@@ -37,9 +38,10 @@ struct TransportCommand {
 };
 
 // `previous_cmd_mps`: the desired speed given at the previous step (< 0: none yet).
+// `rate_mps2`: the planning rate (transport_rate_mps2 for the actor's type).
 TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, double time_left_s, double previous_cmd_mps,
                            double dt_s, const std::vector<ObservedVehicle>& world, const EgoObservation& ego,
-                           const Lanes& lanes, const DirectorConfig& cfg);
+                           const Lanes& lanes, const DirectorConfig& cfg, double rate_mps2);
 
 // A zone at the handover, in road s, in one lane of the ego's direction.
 struct ZoneAtStart {
