@@ -163,6 +163,30 @@ TEST(Casting, NewVehiclesAreCreatedOutOfSightWithASafeGap) {
   EXPECT_GT(std::abs(moved->s_m - world[0].s_m), 4.5 + 5.0 + 1.5 * 25.0 - 1e-9);
 }
 
+TEST(Staging, APlayThatDoesNotFitBesideTheEgosLaneIsMirrored) {
+  PlayConfig play = lead_play();
+  play.roles[0].lane_offset = 1;  // a cutter in the lane left of the ego
+  play.clear = {{0, 3.0, 60.0}, {1, -25.0, 4.0}};
+  PlayActionConfig signal;
+  signal.kind = PlayActionKind::kIndicator;
+  signal.indicator = 2;  // right
+  PlayActionConfig cut;
+  cut.kind = PlayActionKind::kLaneChange;
+  cut.lane_offset = -1;
+  play.actions = {signal, cut};
+  // The ego in the right lane of two: as written.
+  EXPECT_EQ(staged_beside(play, 0, Lanes{2, 0}).roles[0].lane_offset, 1);
+  // In the left lane: from the right, signalling left, changing left.
+  const PlayConfig m = staged_beside(play, 1, Lanes{2, 0});
+  EXPECT_EQ(m.roles[0].lane_offset, -1);
+  EXPECT_EQ(m.clear[1].lane_offset, -1);
+  EXPECT_EQ(m.actions[0].indicator, 1);
+  EXPECT_EQ(m.actions[1].lane_offset, 1);
+  EXPECT_EQ(slots_of(m, Direction::kForward, 1, 25.0, Lanes{2, 0})[0].lane, 0);
+  // The middle lane of three: both sides fit, as written.
+  EXPECT_EQ(staged_beside(play, 1, Lanes{3, 0}).roles[0].lane_offset, 1);
+}
+
 // --- Transport
 
 TEST(Transport, AnActorTrackingItsCommandReachesTheSlotWithinAMetreAndTheSlotSpeed) {

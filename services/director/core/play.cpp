@@ -60,6 +60,7 @@ const char* to_string(PlayPhase p) {
 
 PlayRun::PlayRun(const PlayConfig& play, const PlaySetting& setting)
     : play_(play),
+      staged_(play),
       setting_(setting),
       estimator_(StartTimeParams{setting.director.accel_memory_s}),
       roles_(play.roles.size()) {}
@@ -188,7 +189,8 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
   }
   estimated_start_s_ = in.ego.time_s + pred.time_s;
   // The lane the ego is in, or moving to.
-  const std::vector<Slot> slots = slots_of(play_, in.ego.direction, in.ego.target_lane, pred.speed_mps, setting_.lanes);
+  staged_ = staged_beside(play_, in.ego.target_lane, setting_.lanes);
+  const std::vector<Slot> slots = slots_of(staged_, in.ego.direction, in.ego.target_lane, pred.speed_mps, setting_.lanes);
   // Actors that left the world (beyond the window) are lost: their roles are cast again.
   for (Role& r : roles_) {
     if (r.actor == kNoVehicle || find(in, r.actor) != nullptr) continue;
@@ -288,7 +290,7 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
 
 void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
   if (play_.clear.empty()) return;
-  const std::vector<ZoneAtStart> zones = zones_of(play_, in.ego.direction, in.ego.target_lane, setting_.lanes);
+  const std::vector<ZoneAtStart> zones = zones_of(staged_, in.ego.direction, in.ego.target_lane, setting_.lanes);
   std::vector<int> role_lanes;
   for (const Slot& s : slots) {
     if (s.direction == in.ego.direction) role_lanes.push_back(s.lane);
@@ -326,13 +328,14 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, d
 
 void PlayRun::hand_over(const PlayInput& in, PlayOutput& out) {
   handover_time_s_ = in.ego.time_s;
+  staged_ = staged_beside(play_, in.ego.target_lane, setting_.lanes);
   const int dir = sign(in.ego.direction);
   std::string problems;
   auto problem = [&](const std::string& p) { problems += (problems.empty() ? "" : "; ") + p; };
   scripted_.assign(roles_.size(), ActorControl{});
   for (std::size_t r = 0; r < roles_.size(); ++r) {
     Role& role = roles_[r];
-    const PlayRoleConfig& rc = play_.roles[r];
+    const PlayRoleConfig& rc = staged_.roles[r];
     const ObservedVehicle* v = role.actor == kNoVehicle ? nullptr : find(in, role.actor);
     if (v == nullptr) {
       problem(rc.name + ": no actor");
@@ -359,7 +362,7 @@ void PlayRun::hand_over(const PlayInput& in, PlayOutput& out) {
     c.max_jerk_mps3 = setting_.director.max_jerk_mps3;
     scripted_[r] = c;
   }
-  const std::vector<ZoneAtStart> zones = zones_of(play_, in.ego.direction, in.ego.target_lane, setting_.lanes);
+  const std::vector<ZoneAtStart> zones = zones_of(staged_, in.ego.direction, in.ego.target_lane, setting_.lanes);
   for (const ObservedVehicle& v : in.world) {
     const bool actor = std::any_of(roles_.begin(), roles_.end(), [&](const Role& r) { return r.actor == v.id; });
     if (actor) continue;
@@ -388,7 +391,7 @@ void PlayRun::hand_over(const PlayInput& in, PlayOutput& out) {
     return;
   }
   phase_ = PlayPhase::kHandedOver;
-  script_.emplace(play_);
+  script_.emplace(staged_);
   for (std::size_t r = 0; r < roles_.size(); ++r) command(roles_[r].actor, scripted_[r], in.step, out);
   report(in, out, "every role in place; the script starts");
   run(in, out);

@@ -130,6 +130,7 @@ class PlayRun {
   double ego_progress(const EgoObservation& ego) const { return sign(ego.direction) * ego.s_m; }
 
   PlayConfig play_;
+  PlayConfig staged_;  // play_ as staged beside the ego's lane (stage.hpp, staged_beside)
   PlaySetting setting_;
   PlayPhase phase_ = PlayPhase::kWaiting;
   StartTimeEstimator estimator_;

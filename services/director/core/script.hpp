@@ -32,7 +32,7 @@ class Script {
  private:
   bool due(const PlayActionConfig& a, double since_handover_s, const EgoObservation& ego, const ObservedVehicle& actor) const;
 
-  const PlayConfig& play_;
+  PlayConfig play_;  // a copy: the play as staged at the handover
   std::vector<std::vector<std::size_t>> queue_;  // per role, the indices of its actions in order
   std::vector<std::size_t> next_;                // per role, position in its queue
   std::size_t started_ = 0;

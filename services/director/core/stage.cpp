@@ -5,6 +5,41 @@
 
 namespace entourage::director {
 
+namespace {
+bool fits(const PlayConfig& play, int ego_lane, int side, const Lanes& lanes) {
+  auto ok = [&](int offset) {
+    const int lane = ego_lane + side * offset;
+    return lane >= 0 && lane < lanes.forward;
+  };
+  for (const PlayRoleConfig& r : play.roles) {
+    if (r.direction == Direction::kForward && !ok(r.lane_offset)) return false;
+  }
+  for (const PlayClearZoneConfig& z : play.clear) {
+    if (!ok(z.lane_offset)) return false;
+  }
+  return true;
+}
+}  // namespace
+
+PlayConfig staged_beside(const PlayConfig& play, int ego_lane, const Lanes& lanes) {
+  if (fits(play, ego_lane, 1, lanes) || !fits(play, ego_lane, -1, lanes)) return play;
+  PlayConfig m = play;
+  for (PlayRoleConfig& r : m.roles) {
+    if (r.direction == Direction::kForward) r.lane_offset = -r.lane_offset;
+  }
+  for (PlayClearZoneConfig& z : m.clear) z.lane_offset = -z.lane_offset;
+  constexpr std::uint8_t kLeft = 1;
+  constexpr std::uint8_t kRight = 2;
+  for (PlayActionConfig& a : m.actions) {
+    if (m.roles[static_cast<std::size_t>(a.role)].direction != Direction::kForward) continue;
+    if (a.kind == PlayActionKind::kLaneChange) a.lane_offset = -a.lane_offset;
+    if (a.kind == PlayActionKind::kIndicator && (a.indicator == kLeft || a.indicator == kRight)) {
+      a.indicator = a.indicator == kLeft ? kRight : kLeft;
+    }
+  }
+  return m;
+}
+
 std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int ego_lane, double ego_speed_mps,
                            const Lanes& lanes) {
   std::vector<Slot> out;

@@ -32,6 +32,12 @@ inline double accel_of(const TypeAccels& a, std::uint8_t type_index) {
   return type_index < a.size() ? a[type_index] : 0.0;
 }
 
+// The play as staged beside an ego in `ego_lane`: unchanged if every lane it uses relative to the
+// ego (forward roles, clear zones) exists; otherwise, if the mirror image fits, mirrored: those
+// lane offsets and its scripted lane changes negated, left and right indicators swapped (a car
+// that cuts in from the left of an ego in the left lane cuts in from the right).
+PlayConfig staged_beside(const PlayConfig& play, int ego_lane, const Lanes& lanes);
+
 // The slots of `play`'s roles when the ego, in `ego_lane`, reaches trigger point 2 at
 // `ego_speed_mps`. Forward means the ego's direction.
 std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int ego_lane, double ego_speed_mps,
