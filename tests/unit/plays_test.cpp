@@ -4,6 +4,7 @@
 // reaches a verdict (done, or failed with the reason).
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <string>
 
 #include "play_runs.hpp"
@@ -32,6 +33,8 @@ struct Case {
   std::string scenario;
   std::uint64_t seed;
 };
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.scenario << " seed " << c.seed; }
 
 class PlaySucceeds : public ::testing::TestWithParam<Case> {};
 
