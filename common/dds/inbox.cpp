@@ -134,26 +134,25 @@ Bucket Inbox::take(Step step) {
   return b;
 }
 
-std::vector<msg::Handoff> Inbox::take_handoffs_upto(Step step) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  std::vector<msg::Handoff> out;
-  for (auto it = buckets_.begin(); it != buckets_.end() && it->first <= step; ++it) {
-    auto& h = it->second.handoffs;
-    out.insert(out.end(), std::make_move_iterator(h.begin()), std::make_move_iterator(h.end()));
-    h.clear();
+template <class T>
+std::vector<T> Inbox::take_before_locked(Step end, std::vector<T> Bucket::*samples) {
+  std::vector<T> out;
+  for (auto it = buckets_.begin(); it != buckets_.end() && it->first < end; ++it) {
+    auto& v = it->second.*samples;
+    out.insert(out.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
+    v.clear();
   }
   return out;
 }
 
+std::vector<msg::Handoff> Inbox::take_handoffs_upto(Step step) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return take_before_locked(step + 1, &Bucket::handoffs);
+}
+
 std::vector<msg::ActorCommand> Inbox::take_commands_upto(Step step) {
   std::lock_guard<std::mutex> lock(mutex_);
-  std::vector<msg::ActorCommand> out;
-  for (auto it = buckets_.begin(); it != buckets_.end() && it->first <= step; ++it) {
-    auto& c = it->second.commands;
-    out.insert(out.end(), std::make_move_iterator(c.begin()), std::make_move_iterator(c.end()));
-    c.clear();
-  }
-  return out;
+  return take_before_locked(step + 1, &Bucket::commands);
 }
 
 void Inbox::forget_bookkeeping_before(Step step) {
@@ -177,22 +176,16 @@ std::vector<Step> Inbox::steps_with_samples_before(Step step) const {
 void Inbox::forget_before(Step step) {
   std::lock_guard<std::mutex> lock(mutex_);
   // Handoffs and director commands are never dropped: a late one is still applied (at the next step).
-  std::vector<msg::Handoff> keep;
-  std::vector<msg::ActorCommand> keep_commands;
-  for (auto it = buckets_.begin(); it != buckets_.end() && it->first < step; ++it) {
-    for (auto& h : it->second.handoffs) keep.push_back(std::move(h));
-    for (auto& c : it->second.commands) keep_commands.push_back(std::move(c));
-  }
+  std::vector<msg::Handoff> handoffs = take_before_locked(step, &Bucket::handoffs);
+  std::vector<msg::ActorCommand> commands = take_before_locked(step, &Bucket::commands);
   buckets_.erase(buckets_.begin(), buckets_.lower_bound(step));
-  if (!keep.empty()) {
-    auto& dst = buckets_[step].handoffs;
-    dst.insert(dst.end(), std::make_move_iterator(keep.begin()), std::make_move_iterator(keep.end()));
-  }
-  if (!keep_commands.empty()) {
-    auto& dst = buckets_[step].commands;
-    dst.insert(dst.end(), std::make_move_iterator(keep_commands.begin()),
-               std::make_move_iterator(keep_commands.end()));
-  }
+  auto keep = [this, step](auto& kept, auto Bucket::*samples) {
+    if (kept.empty()) return;
+    auto& dst = buckets_[step].*samples;
+    dst.insert(dst.end(), std::make_move_iterator(kept.begin()), std::make_move_iterator(kept.end()));
+  };
+  keep(handoffs, &Bucket::handoffs);
+  keep(commands, &Bucket::commands);
   egos_.erase(egos_.begin(), egos_.lower_bound(step));
   ledger_.forget_before(step);
 }

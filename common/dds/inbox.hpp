@@ -80,6 +80,9 @@ class Inbox {
 
  private:
   bool refuse(const std::optional<std::string>& reason, const char* what, std::uint32_t id, Step step);
+  // Removes and returns the samples of kind `samples` of every step before `end` (lock held).
+  template <class T>
+  std::vector<T> take_before_locked(Step end, std::vector<T> Bucket::*samples);
 
   mutable std::mutex mutex_;
   std::condition_variable changed_;
