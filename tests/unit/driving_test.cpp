@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core_test_util.hpp"
+#include "mini_world.hpp"
 #include "traffic/driving.hpp"
 #include "traffic/entry.hpp"
 #include "traffic/lane_changes.hpp"
@@ -17,94 +18,9 @@
 namespace entourage {
 namespace {
 
-Vehicle car(VehicleId id, Direction dir, int lane, double s, double v, double v0,
-            LaneChangeModel lc = LaneChangeModel::kMobil) {
-  Vehicle c;
-  c.id = id;
-  c.direction = dir;
-  c.lane = lane;
-  c.s_m = s;
-  c.speed_mps = v;
-  c.length_m = 4.5;
-  c.driver.car_following.idm = {v0, 1.2, 1.5, 2.0, 2.0, 4.0};
-  c.driver.lane_change = lc;
-  c.driver.max_decel_mps2 = 9.0;
-  c.driver.rng_state = 1000 + id;
-  c.lane_change.from_lane = c.lane_change.to_lane = lane;
-  c.lane_change.since_last_change_s = 100.0;
-  return c;
-}
-
-Vehicle truck(VehicleId id, Direction dir, double s, double v) {
-  Vehicle t = car(id, dir, 0, s, v, v, LaneChangeModel::kNone);
-  t.length_m = 16.5;
-  t.driver.car_following.idm.max_accel_mps2 = 0.5;
-  return t;
-}
-
-// A few vehicles stepped with the same phases as the micro region: index, decide all, commit all.
-struct MiniWorld {
-  explicit MiniWorld(const ScenarioConfig& sc)
-      : env(sc), index(sc.road.lanes_forward, sc.road.lanes_backward) {}
-
-  void build_index() {
-    index.clear();
-    for (const Vehicle& v : vehicles) {
-      add_to_index(index, v.direction, v.lane, v.target_lane(), v.id, v.progress_m(), v.speed_mps, v.accel_mps2,
-                   v.length_m);
-    }
-    index.sort();
-  }
-  std::vector<Decision> decide_all() {
-    build_index();
-    std::vector<Decision> d;
-    for (const Vehicle& v : vehicles) d.push_back(decide(v, index, env));
-    return d;
-  }
-  void step() {
-    const std::vector<Decision> d = decide_all();
-    for (std::size_t i = 0; i < vehicles.size(); ++i) commit(vehicles[i], d[i], env.dt_s());
-    check_no_overlap();
-  }
-  Vehicle& get(VehicleId id) {
-    for (Vehicle& v : vehicles) {
-      if (v.id == id) return v;
-    }
-    throw std::runtime_error("no such vehicle");
-  }
-  // Physical lane numbered from the forward direction's right edge, for both directions.
-  int physical(const Vehicle& v, int lane) const {
-    return v.direction == Direction::kForward ? lane : env.lanes(Direction::kForward) + env.lanes(Direction::kBackward) - 1 - lane;
-  }
-  bool shares_lane(const Vehicle& a, const Vehicle& b) const {
-    for (int la : {a.lane, a.target_lane()}) {
-      for (int lb : {b.lane, b.target_lane()}) {
-        if (physical(a, la) == physical(b, lb)) return true;
-      }
-    }
-    return false;
-  }
-  void check_no_overlap() {
-    for (std::size_t i = 0; i < vehicles.size(); ++i) {
-      for (std::size_t j = i + 1; j < vehicles.size(); ++j) {
-        const Vehicle& a = vehicles[i];
-        const Vehicle& b = vehicles[j];
-        if (!shares_lane(a, b)) continue;
-        const double apart = std::abs(a.s_m - b.s_m) - 0.5 * (a.length_m + b.length_m);
-        min_clearance_m = std::min(min_clearance_m, apart);
-        EXPECT_GT(apart, 0.0) << "vehicles " << a.id << " and " << b.id << " overlap at t = " << t();
-      }
-    }
-    ++steps;
-  }
-  double t() const { return steps * env.dt_s(); }
-
-  DrivingEnvironment env;
-  LaneIndex index;
-  std::vector<Vehicle> vehicles;
-  double min_clearance_m = std::numeric_limits<double>::infinity();
-  int steps = 0;
-};
+using testing::car;
+using testing::MiniWorld;
+using testing::truck;
 
 ScenarioConfig rural() { return testing::road_scenario(1, 1, RoadKind::kRural); }
 
@@ -390,121 +306,6 @@ TEST(OncomingReaction, ADriverBrakesForAnOvertakerInItsLane) {
   EXPECT_GT(w.min_clearance_m, 0.0);
 }
 
-
-// --- Actors of a play (traffic/actor_driving.hpp): the director's control over the driver's own model.
-
-ActorControl transported(double speed_mps, int lane = -1) {
-  ActorControl c;
-  c.mode = ControlMode::kTransported;
-  c.play_id = 1;
-  c.speed_mps = speed_mps;
-  c.lane = lane;
-  return c;
-}
-
-ActorControl controlled(double speed_mps, double rate_mps2) {
-  ActorControl c;
-  c.mode = ControlMode::kControlled;
-  c.play_id = 1;
-  c.speed_mps = speed_mps;
-  c.accel_mps2 = c.decel_mps2 = rate_mps2;
-  return c;
-}
-
-TEST(ActorDriving, ATransportedVehicleDrivesAtTheDirectorsSpeedWithBoundedJerk) {
-  MiniWorld w(testing::road_scenario(2, 0));
-  Vehicle v = car(1, Direction::kForward, 0, 1000.0, 20.0, 33.0);
-  v.control = transported(26.0);
-  w.vehicles.push_back(v);
-  double prev_a = 0.0;
-  double max_rise = 0.0;
-  for (int i = 0; i < 900; ++i) {
-    w.step();
-    max_rise = std::max(max_rise, (w.get(1).accel_mps2 - prev_a) / w.env.dt_s());
-    prev_a = w.get(1).accel_mps2;
-  }
-  EXPECT_NEAR(w.get(1).speed_mps, 26.0, 0.3);  // not its own 33
-  EXPECT_LE(max_rise, v.control.max_jerk_mps3 + 1e-9);
-  EXPECT_EQ(w.get(1).lane, 0);  // no lane change of its own
-}
-
-TEST(ActorDriving, ATransportedVehicleGoesToTheDirectorsLaneAndStaysThere) {
-  MiniWorld w(testing::road_scenario(3, 0));
-  Vehicle v = car(1, Direction::kForward, 0, 1000.0, 25.0, 25.0);
-  v.control = transported(25.0, 2);
-  w.vehicles.push_back(v);
-  for (int i = 0; i < 400; ++i) w.step();
-  EXPECT_EQ(w.get(1).lane, 2);
-  EXPECT_FALSE(w.get(1).lane_change.active());
-}
-
-TEST(ActorDriving, AnAutonomousDriverWouldHaveChangedLaneWhereATransportedOneKeepsIt) {
-  // Behind a slow truck with a free left lane: MOBIL changes lane, an actor keeps its part.
-  for (const bool actor : {false, true}) {
-    MiniWorld w(testing::road_scenario(2, 0));
-    Vehicle v = car(1, Direction::kForward, 0, 1000.0, 25.0, 30.0);
-    if (actor) v.control = transported(30.0);
-    w.vehicles = {v, truck(2, Direction::kForward, 1060.0, 20.0)};
-    bool changed = false;
-    for (int i = 0; i < 300; ++i) {
-      w.step();
-      changed = changed || w.get(1).lane != 0 || w.get(1).lane_change.active();
-    }
-    EXPECT_EQ(changed, !actor) << (actor ? "actor" : "autonomous");
-  }
-}
-
-TEST(ActorDriving, AControlledActorBrakesAtTheScriptsRateToAStandstill) {
-  MiniWorld w(testing::road_scenario(2, 0));
-  Vehicle v = car(1, Direction::kForward, 0, 1000.0, 30.0, 30.0);
-  v.control = controlled(0.0, 6.0);
-  w.vehicles.push_back(v);
-  w.step();
-  EXPECT_NEAR(w.get(1).accel_mps2, -6.0, 1e-9);
-  for (int i = 0; i < 60; ++i) w.step();
-  EXPECT_DOUBLE_EQ(w.get(1).speed_mps, 0.0);
-  const double s_stopped = w.get(1).s_m;
-  for (int i = 0; i < 50; ++i) w.step();
-  EXPECT_DOUBLE_EQ(w.get(1).s_m, s_stopped);  // stays stopped: the script's speed is 0
-}
-
-TEST(ActorDriving, AControlledActorNeverDrivesIntoTheVehicleAhead) {
-  // The script asks for 35 m/s; a slower vehicle 40 m ahead holds it back.
-  MiniWorld w(testing::road_scenario(1, 0));
-  Vehicle v = car(1, Direction::kForward, 0, 1000.0, 30.0, 30.0);
-  v.control = controlled(35.0, 2.0);
-  w.vehicles = {v, truck(2, Direction::kForward, 1040.0, 20.0)};
-  for (int i = 0; i < 600; ++i) w.step();
-  EXPECT_GT(w.min_clearance_m, 2.0);
-  EXPECT_NEAR(w.get(1).speed_mps, 20.0, 0.5);
-}
-
-TEST(ActorDriving, AForcedLaneChangeStartsAtOnceUnlessTheTargetLaneIsPhysicallyOccupied) {
-  MiniWorld w(testing::road_scenario(2, 0));
-  Vehicle actor = car(1, Direction::kForward, 1, 1000.0, 25.0, 25.0);
-  actor.control = controlled(25.0, 2.0);
-  actor.control.lane = 0;
-  actor.control.force_lane = true;
-  actor.control.lane_change_duration_s = 2.0;
-  // A car 8 m behind in the target lane (bumper gap 3.5 m): MOBIL would refuse, a cut-in goes.
-  w.vehicles = {actor, car(2, Direction::kForward, 0, 992.0, 25.0, 25.0)};
-  std::vector<Decision> d = w.decide_all();
-  EXPECT_EQ(d[0].lane_change.phase, LaneChangePhase::kMoving);
-  EXPECT_EQ(d[0].lane_change.to_lane, 0);
-  EXPECT_DOUBLE_EQ(d[0].lane_change.duration_s, 2.0);
-  // Beside it: no change.
-  w.get(2).s_m = 1002.0;
-  d = w.decide_all();
-  EXPECT_EQ(d[0].lane_change.phase, LaneChangePhase::kNone);
-}
-
-TEST(ActorDriving, AControlledActorShowsTheScriptsIndicator) {
-  Vehicle v = car(1, Direction::kForward, 1, 1000.0, 25.0, 25.0);
-  EXPECT_EQ(v.indicator(), Indicator::kOff);
-  v.control = controlled(25.0, 1.0);
-  v.control.indicator = static_cast<std::uint8_t>(Indicator::kRight);
-  EXPECT_EQ(v.indicator(), Indicator::kRight);
-}
 
 }  // namespace
 }  // namespace entourage
