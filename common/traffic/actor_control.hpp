@@ -39,6 +39,9 @@ struct ActorControl {
   bool active() const { return mode != ControlMode::kAutonomous; }
 };
 
+bool operator==(const ActorControl& a, const ActorControl& b);
+inline bool operator!=(const ActorControl& a, const ActorControl& b) { return !(a == b); }
+
 // A control addressed to one vehicle, written by the director at one step and applied by the
 // vehicle's owner at the next step boundary (like a handoff).
 struct ActorCommand {

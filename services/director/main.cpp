@@ -8,8 +8,6 @@
 
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
-
 namespace entourage {
 namespace {
 
@@ -46,14 +44,7 @@ int run(const dds::ServiceContext& ctx) {
   dds::run_step_loop(
       ctx, shell.inbox, shell.done, shell.status,
       [&](Step k) {
-        director::DirectorInput in;
-        in.step = k;
-        in.ego = dds::from_msg(*shell.inbox.ego(k));
-        if (k > 0) {
-          for (const auto& m : shell.inbox.take(k - 1).vehicles) in.world.push_back(dds::from_msg(m));
-        }
-        std::sort(in.world.begin(), in.world.end(),
-                  [](const ObservedVehicle& a, const ObservedVehicle& b) { return a.id < b.id; });
+        const StepInput in = dds::gather_inputs(k, shell.inbox, {});  // it publishes no vehicles
         const director::DirectorOutput out = core.step(in);
         const EgoObservation& ego = in.ego;
         dds::TopicCounts written{};

@@ -13,10 +13,10 @@ constexpr double kEagerPoliteness = 0.0;
 // After the play has ended (or failed) the run goes on this long, for the release.
 constexpr double kAfterEnd_s = 2.0;
 
-bool occupies(const ObservedVehicle& v, int lane) { return v.lane == lane || v.target_lane == lane; }
+using director::occupies;
 
 bool share_lane(const ObservedVehicle& a, const ObservedVehicle& b) {
-  return a.direction == b.direction && (occupies(b, a.lane) || occupies(b, a.target_lane));
+  return occupies(b, a.direction, a.lane) || occupies(b, a.direction, a.target_lane);
 }
 
 double bumper_gap_m(const ObservedVehicle& a, const ObservedVehicle& b) {
@@ -130,8 +130,9 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
         const bool actor = a.control != ControlMode::kAutonomous || b.control != ControlMode::kAutonomous;
         ++(actor ? r.overlaps_with_actor : r.overlaps_other);
       }
-      if (in.ego_prev && a.control != ControlMode::kAutonomous && a.direction == in.ego_prev->direction &&
-          (occupies(a, in.ego_prev->lane) || occupies(a, in.ego_prev->target_lane)) &&
+      if (in.ego_prev && a.control != ControlMode::kAutonomous &&
+          (occupies(a, in.ego_prev->direction, in.ego_prev->lane) ||
+           occupies(a, in.ego_prev->direction, in.ego_prev->target_lane)) &&
           std::abs(a.s_m - in.ego_prev->s_m) - 0.5 * (a.length_m + in.ego_prev->length_m) < 0.0 &&
           ego_contacts.insert(a.id).second) {
         ++r.ego_contacts_with_actor;

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "director/core/stage.hpp"
 #include "window_cores.hpp"
 
 namespace entourage::bench {

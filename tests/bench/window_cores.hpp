@@ -83,13 +83,7 @@ class WindowCores {
   }
 
   // The director's step for `in` (it sees the same ego and world as the region cores).
-  director::DirectorOutput direct(const StepInput& in) {
-    director::DirectorInput d;
-    d.step = in.step;
-    d.ego = in.ego;
-    d.world = in.world_prev;
-    return director_.step(d);
-  }
+  director::DirectorOutput direct(const StepInput& in) { return director_.step(in); }
 
   // Publishes what the cores computed for `in` as the world and handoffs of its step.
   void publish(const StepInput& in, const StepOutputs& out) {

@@ -223,20 +223,20 @@ TEST(Transport, AVehicleThatWouldStandInAClearZoneIsSentToTheNextLaneOrOutOfTheZ
   DirectorConfig cfg;
   // At 25 m/s for 40 s, vehicle 1 ends 20 m ahead of the ego's handover position: in the zone.
   const ObservedVehicle v = vehicle(1, 2020.0, 25.0);
-  const auto two = clear_out(v, zones_of(play, Direction::kForward, 0, Lanes{2, 0}), 40.0, {0}, Lanes{2, 0}, cfg);
+  const auto two = clear_out(v, zones_of(play, Direction::kForward, 0, 3000.0, Lanes{2, 0}), 40.0, {0}, Lanes{2, 0}, cfg);
   ASSERT_TRUE(two.has_value());
   EXPECT_EQ(two->lane, 1);
   // Both lanes zones: out by its speed, ahead of the zone or behind it at the start.
   PlayConfig both = play;
   both.clear.push_back({1, 5.0, 40.0});
-  const auto out = clear_out(v, zones_of(both, Direction::kForward, 0, Lanes{2, 0}), 40.0, {0}, Lanes{2, 0}, cfg);
+  const auto out = clear_out(v, zones_of(both, Direction::kForward, 0, 3000.0, Lanes{2, 0}), 40.0, {0}, Lanes{2, 0}, cfg);
   ASSERT_TRUE(out.has_value());
   EXPECT_EQ(out->lane, 0);
   const double s_then = v.s_m + out->speed_mps * 40.0;
   EXPECT_TRUE(s_then > 3040.0 + 2.25 || s_then < 3005.0 - 2.25) << s_then;
   // On one lane it would have to overtake or be overtaken: left to its own driving.
-  EXPECT_FALSE(clear_out(v, zones_of(play, Direction::kForward, 0, Lanes{1, 1}), 40.0, {0}, Lanes{1, 1}, cfg).has_value());
-  EXPECT_FALSE(clear_out(vehicle(2, 2500.0, 25.0), zones_of(play, Direction::kForward, 0, Lanes{2, 0}), 40.0, {0},
+  EXPECT_FALSE(clear_out(v, zones_of(play, Direction::kForward, 0, 3000.0, Lanes{1, 1}), 40.0, {0}, Lanes{1, 1}, cfg).has_value());
+  EXPECT_FALSE(clear_out(vehicle(2, 2500.0, 25.0), zones_of(play, Direction::kForward, 0, 3000.0, Lanes{2, 0}), 40.0, {0},
                          Lanes{2, 0}, cfg)
                    .has_value());
 }
@@ -285,7 +285,7 @@ TEST(PlayPhases, WaitingPreparingThenFailedWithTheReasonWhenNoActorCouldBeCast) 
   play.roles[0].type_index = 0;
   sc.plays = {play};
   DirectorCore core(sc, 1);
-  DirectorInput in;
+  StepInput in;
   in.ego = testing::ego_at(0, 1000.0, 25.0);
   DirectorOutput out = core.step(in);
   ASSERT_EQ(out.reports.size(), 1U);

@@ -45,7 +45,7 @@ bool gap_is_free(const Slot& slot, double s_m, double length_m, double speed_mps
     if (!clear(q, v.length_m, q < p ? v.speed_mps : speed_mps)) return false;
   }
   const EgoObservation& e = at.ego;
-  if (e.direction == slot.direction && (e.lane == slot.lane || e.target_lane == slot.lane)) {
+  if (occupies(e, slot.direction, slot.lane)) {
     const double q = dir * e.s_m;
     if (!clear(q, e.length_m, q < p ? e.speed_mps : speed_mps)) return false;
   }
@@ -69,8 +69,8 @@ double casting_cost(const Slot& slot, const PlayRoleConfig& role, const Observed
   return std::abs(plan.cruise_mps - v.speed_mps) + cfg.lane_change_cost_mps * lane_changes;
 }
 
-std::vector<int> cast_roles(const std::vector<Slot>& slots, const PlayConfig& play, const std::vector<bool>& available,
-                            const CastingSituation& at, const DirectorConfig& cfg) {
+std::vector<int> cast_roles(const std::vector<Slot>& slots, const std::vector<PlayRoleConfig>& role_configs,
+                            const std::vector<bool>& available, const CastingSituation& at, const DirectorConfig& cfg) {
   const std::size_t roles = slots.size();
   // Only vehicles that could play some role take part (keeps the programme small).
   std::vector<std::size_t> pool;
@@ -80,7 +80,7 @@ std::vector<int> cast_roles(const std::vector<Slot>& slots, const PlayConfig& pl
     std::vector<double> c(roles);
     bool any = false;
     for (std::size_t r = 0; r < roles; ++r) {
-      c[r] = casting_cost(slots[r], play.roles[r], at.world[i], at, cfg);
+      c[r] = casting_cost(slots[r], role_configs[r], at.world[i], at, cfg);
       any = any || std::isfinite(c[r]);
     }
     if (!any) continue;

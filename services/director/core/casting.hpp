@@ -28,10 +28,10 @@ struct CastingSituation {
 double casting_cost(const Slot& slot, const PlayRoleConfig& role, const ObservedVehicle& v, const CastingSituation& at,
                     const DirectorConfig& cfg);
 
-// The role each vehicle of `world` plays: per role the index into world, or -1 (create one).
-// `available[i]`: world[i] may be cast (not an actor of another play).
-std::vector<int> cast_roles(const std::vector<Slot>& slots, const PlayConfig& play, const std::vector<bool>& available,
-                            const CastingSituation& at, const DirectorConfig& cfg);
+// Which vehicle of `world` plays each role (roles[r] starting at slots[r]): per role the index into
+// world, or -1 (create one). `available[i]`: world[i] may be cast (not an actor already).
+std::vector<int> cast_roles(const std::vector<Slot>& slots, const std::vector<PlayRoleConfig>& roles,
+                            const std::vector<bool>& available, const CastingSituation& at, const DirectorConfig& cfg);
 
 // Where to create a vehicle of length `length_m` for `slot`: out of sight (an outer region, at
 // least hidden_margin_m beyond the inner region), from where it reaches the slot in time at a

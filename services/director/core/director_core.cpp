@@ -37,7 +37,7 @@ DirectorCore::DirectorCore(const ScenarioConfig& scenario, std::uint64_t seed)
   for (const PlayConfig& p : scenario_.plays) plays_.emplace_back(p, setting);
 }
 
-DirectorOutput DirectorCore::step(const DirectorInput& in) {
+DirectorOutput DirectorCore::step(const StepInput& in) {
   DirectorOutput out;
   // A vehicle is free to cast unless it acts already (its owner publishes its control) or a
   // play holds it (its command may not have reached it yet).
@@ -46,19 +46,18 @@ DirectorOutput DirectorCore::step(const DirectorInput& in) {
     for (VehicleId id : p.holds()) held.push_back(id);
   }
   std::sort(held.begin(), held.end());
-  std::vector<bool> available(in.world.size());
-  for (std::size_t i = 0; i < in.world.size(); ++i) {
-    const ObservedVehicle& v = in.world[i];
+  std::vector<bool> available(in.world_prev.size());
+  for (std::size_t i = 0; i < in.world_prev.size(); ++i) {
+    const ObservedVehicle& v = in.world_prev[i];
     available[i] = v.control == ControlMode::kAutonomous && !std::binary_search(held.begin(), held.end(), v.id);
   }
   const ServiceId self{Role::kDirector, 0};
   for (PlayRun& play : plays_) {
-    PlayOutput po = play.step(PlayInput{in.step, scenario_.step_s, in.ego, in.world, available, factory_});
+    PlayOutput po = play.step(PlayInput{in.step, scenario_.step_s, in.ego, in.world_prev, available, factory_});
     if (po.report) out.reports.push_back(std::move(*po.report));
     out.commands.insert(out.commands.end(), po.commands.begin(), po.commands.end());
-    for (std::size_t i = 0; i < po.created.size(); ++i) {
-      out.births.push_back(make_handoff(po.created[i], in.step, self, Role::kMeso, po.created_regions[i],
-                                        HandoffReason::kDirector));
+    for (const PlayOutput::Created& c : po.created) {
+      out.births.push_back(make_handoff(c.vehicle, in.step, self, Role::kMeso, c.region, HandoffReason::kDirector));
     }
   }
   return out;

@@ -12,15 +12,10 @@
 #include "director/core/play.hpp"
 #include "scenario/config.hpp"
 #include "traffic/handoff.hpp"
+#include "traffic/step_io.hpp"
 #include "traffic/world.hpp"
 
 namespace entourage::director {
-
-struct DirectorInput {
-  Step step = 0;
-  EgoObservation ego;                  // at this step
-  std::vector<ObservedVehicle> world;  // every vehicle published for step - 1, sorted by id
-};
 
 struct DirectorOutput {
   std::vector<PlayReport> reports;
@@ -32,7 +27,9 @@ class DirectorCore {
  public:
   DirectorCore(const ScenarioConfig& scenario, std::uint64_t seed);
 
-  DirectorOutput step(const DirectorInput& in);
+  // The same inputs as the region cores (traffic/step_io.hpp): the ego at this step and every
+  // vehicle published for the previous one, by id; the director uses no handoffs or commands.
+  DirectorOutput step(const StepInput& in);
   const std::vector<PlayRun>& plays() const { return plays_; }
 
  private:

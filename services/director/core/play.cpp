@@ -35,13 +35,6 @@ std::string fmt1(double x) {
   os << x;
   return os.str();
 }
-
-bool same(const ActorControl& a, const ActorControl& b) {
-  return a.mode == b.mode && a.play_id == b.play_id && a.speed_mps == b.speed_mps && a.accel_mps2 == b.accel_mps2 &&
-         a.decel_mps2 == b.decel_mps2 && a.max_jerk_mps3 == b.max_jerk_mps3 && a.lane == b.lane &&
-         a.force_lane == b.force_lane && a.lane_change_duration_s == b.lane_change_duration_s &&
-         a.indicator == b.indicator;
-}
 }  // namespace
 
 const char* to_string(PlayPhase p) {
@@ -96,9 +89,17 @@ ActorControl PlayRun::transported(double speed_mps, int lane) const {
   return c;
 }
 
+ActorControl PlayRun::releasing() const {
+  ActorControl c;
+  c.mode = ControlMode::kReleasing;
+  c.play_id = play_.id;
+  c.max_jerk_mps3 = setting_.director.max_jerk_mps3;
+  return c;
+}
+
 void PlayRun::command(VehicleId id, const ActorControl& c, Step step, PlayOutput& out) {
   auto it = sent_.find(id);
-  if (it != sent_.end() && same(it->second, c)) return;
+  if (it != sent_.end() && it->second == c) return;
   sent_[id] = c;
   out.commands.push_back({id, step, c});
 }
@@ -131,7 +132,6 @@ PlayOutput PlayRun::step(const PlayInput& in) {
   const double x = ego_progress(in.ego);
   const int dir = sign(in.ego.direction);
   const PlayPhase before = phase_;
-  std::string detail;
   if (phase_ == PlayPhase::kWaiting && x >= dir * play_.trigger1_s_m && x < dir * play_.trigger2_s_m) {
     // Preparing starts with the first estimate; casting at the next step.
     phase_ = PlayPhase::kPreparing;
@@ -174,7 +174,7 @@ PlayOutput PlayRun::step(const PlayInput& in) {
                             in.ego.time_s - last_progress_report_s_ >= kProgressReportInterval_s - 1e-9;
   if (first_report_ || before != phase_ || estimate_moved || progress_due) {
     if (progress_due) last_progress_report_s_ = in.ego.time_s;
-    report(in, out, detail);
+    report(in, out, "");
   }
   first_report_ = false;
   return out;
@@ -218,17 +218,16 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
 std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
   // Only the roles still without an actor are cast; the others keep theirs.
   std::vector<std::size_t> open;
-  PlayConfig sub = play_;
-  sub.roles.clear();
+  std::vector<PlayRoleConfig> sub_roles;
   std::vector<Slot> sub_slots;
   for (std::size_t r = 0; r < roles_.size(); ++r) {
     if (!this->open(roles_[r], in)) continue;
     open.push_back(r);
-    sub.roles.push_back(play_.roles[r]);
+    sub_roles.push_back(play_.roles[r]);
     sub_slots.push_back(slots[r]);
   }
   const CastingSituation at{in.world, in.ego, time_left_s, play_.trigger2_s_m, setting_.lanes, setting_.type_accel_mps2};
-  const std::vector<int> chosen = cast_roles(sub_slots, sub, in.available, at, setting_.director);
+  const std::vector<int> chosen = cast_roles(sub_slots, sub_roles, in.available, at, setting_.director);
   const WindowBounds window = WindowBounds::around(in.ego.s_m, setting_.window);
   std::string detail;
   for (std::size_t k = 0; k < open.size(); ++k) {
@@ -259,8 +258,7 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, d
     ++created_count_;
     detail += (detail.empty() ? "" : ", ") + rc.name + " = new vehicle " + std::to_string(v.id) + " (" +
               to_string(place->region) + ")";
-    out.created.push_back(std::move(v));
-    out.created_regions.push_back(place->region);
+    out.created.push_back({std::move(v), place->region});
   }
   return detail;
 }
@@ -290,7 +288,8 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
 
 void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
   if (play_.clear.empty()) return;
-  const std::vector<ZoneAtStart> zones = zones_of(staged_, in.ego.direction, in.ego.target_lane, setting_.lanes);
+  const std::vector<ZoneAtStart> zones =
+      zones_of(staged_, in.ego.direction, in.ego.target_lane, play_.trigger2_s_m, setting_.lanes);
   std::vector<int> role_lanes;
   for (const Slot& s : slots) {
     if (s.direction == in.ego.direction) role_lanes.push_back(s.lane);
@@ -362,28 +361,15 @@ void PlayRun::hand_over(const PlayInput& in, PlayOutput& out) {
     c.max_jerk_mps3 = setting_.director.max_jerk_mps3;
     scripted_[r] = c;
   }
-  const std::vector<ZoneAtStart> zones = zones_of(staged_, in.ego.direction, in.ego.target_lane, setting_.lanes);
+  // The zones around where the ego is now (it has just passed trigger point 2).
+  const std::vector<ZoneAtStart> zones = zones_of(staged_, in.ego.direction, in.ego.target_lane, in.ego.s_m, setting_.lanes);
   for (const ObservedVehicle& v : in.world) {
     const bool actor = std::any_of(roles_.begin(), roles_.end(), [&](const Role& r) { return r.actor == v.id; });
     if (actor) continue;
-    for (const ZoneAtStart& z : zones) {
-      // The zone relative to where the ego is now (it has just passed trigger point 2).
-      ZoneAtStart here = z;
-      here.from_s_m += in.ego.s_m - play_.trigger2_s_m;
-      here.to_s_m += in.ego.s_m - play_.trigger2_s_m;
-      if (v.direction == here.direction && (in_zone(here, v.lane, v.s_m, v.length_m) || in_zone(here, v.target_lane, v.s_m, v.length_m))) {
-        problem("vehicle " + std::to_string(v.id) + " in a clear zone");
-      }
-    }
+    if (zone_hit(zones, v, v.s_m) != nullptr) problem("vehicle " + std::to_string(v.id) + " in a clear zone");
   }
   // Cleared vehicles drive on as they like again.
-  for (VehicleId id : cleared_) {
-    ActorControl c;
-    c.mode = ControlMode::kReleasing;
-    c.play_id = play_.id;
-    c.max_jerk_mps3 = setting_.director.max_jerk_mps3;
-    command(id, c, in.step, out);
-  }
+  for (VehicleId id : cleared_) command(id, releasing(), in.step, out);
   if (!problems.empty()) {
     phase_ = PlayPhase::kFailed;
     release_all(in, out);
@@ -421,12 +407,7 @@ void PlayRun::run(const PlayInput& in, PlayOutput& out) {
 void PlayRun::release_all(const PlayInput& in, PlayOutput& out) {
   release_until_s_ = in.ego.time_s + play_.release_s;
   for (const Role& r : roles_) {
-    if (r.actor == kNoVehicle) continue;
-    ActorControl c;
-    c.mode = ControlMode::kReleasing;
-    c.play_id = play_.id;
-    c.max_jerk_mps3 = setting_.director.max_jerk_mps3;
-    command(r.actor, c, in.step, out);
+    if (r.actor != kNoVehicle) command(r.actor, releasing(), in.step, out);
   }
 }
 

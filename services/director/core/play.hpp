@@ -78,8 +78,11 @@ struct PlayInput {
 struct PlayOutput {
   std::optional<PlayReport> report;
   std::vector<ActorCommand> commands;
-  std::vector<Vehicle> created;  // with their region, to hand to meso
-  std::vector<Region> created_regions;
+  struct Created {
+    Vehicle vehicle;
+    Region region;  // the outer region it is handed to meso in
+  };
+  std::vector<Created> created;
 };
 
 struct PlaySetting {
@@ -122,6 +125,7 @@ class PlayRun {
 
   void command(VehicleId id, const ActorControl& c, Step step, PlayOutput& out);
   ActorControl transported(double speed_mps, int lane) const;
+  ActorControl releasing() const;
   // A role to cast: without an actor, or with one that has missed its start by far for a while
   // (the ego changed lane, traffic held it up): it is replaced if a better one is found.
   bool open(const Role& r, const PlayInput& in) const;

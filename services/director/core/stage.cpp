@@ -121,6 +121,10 @@ bool occupies(const ObservedVehicle& v, Direction dir, int lane) {
   return v.direction == dir && (v.lane == lane || v.target_lane == lane);
 }
 
+bool occupies(const EgoObservation& ego, Direction dir, int lane) {
+  return ego.direction == dir && (ego.lane == lane || ego.target_lane == lane);
+}
+
 Between between(const Slot& slot, VehicleId self, double s_m, double time_s, const std::vector<ObservedVehicle>& world,
                 const EgoObservation& ego, double ego_s_at_handover_m) {
   const int dir = sign(slot.direction);
@@ -142,7 +146,6 @@ Between between(const Slot& slot, VehicleId self, double s_m, double time_s, con
     const double ahead_now = dir * (s_m - ego.s_m);
     const double ahead_then = dir * (slot.s_m - ego_s_at_handover_m);
     b.ego = (ahead_now > 0.0) != (ahead_then > 0.0);
-    b.pass_ego = b.ego && ahead_now < 0.0;
   }
   return b;
 }

@@ -90,12 +90,13 @@ struct Between {
   int vehicles = 0;   // whose order changes either way
   int to_pass = 0;    // of which it must get past (ahead of it now, behind it then)
   bool ego = false;   // its order relative to the ego changes
-  bool pass_ego = false;  // it must get past the ego
 };
 Between between(const Slot& slot, VehicleId self, double s_m, double time_s, const std::vector<ObservedVehicle>& world,
                 const EgoObservation& ego, double ego_s_at_handover_m);
 
-// Does `v` occupy `lane` of direction `dir` (its lane or, while changing, its target lane)?
+// Does `v` (or the ego) occupy `lane` of direction `dir` (its lane or, while changing, its target
+// lane)?
 bool occupies(const ObservedVehicle& v, Direction dir, int lane);
+bool occupies(const EgoObservation& ego, Direction dir, int lane);
 
 }  // namespace entourage::director

@@ -35,7 +35,7 @@ bool held_up(const Slot& slot, const ObservedVehicle& actor, double cmd_mps, dou
     const double q = dir * v.s_m;
     if (q > p && q < horizon && v.speed_mps < cmd_mps - kHoldsUp_mps) return true;
   }
-  if (ego.direction == slot.direction && (ego.lane == slot.lane || ego.target_lane == slot.lane)) {
+  if (occupies(ego, slot.direction, slot.lane)) {
     const double q = dir * ego.s_m;
     const bool passing = actor.lane != slot.lane;  // already beside: until it is well past
     if (q > p - (passing ? kPassedEgoBy_m : 0.0) && q < horizon) return true;
@@ -67,13 +67,14 @@ TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, doubl
   return c;
 }
 
-std::vector<ZoneAtStart> zones_of(const PlayConfig& play, Direction ego_direction, int ego_lane, const Lanes& lanes) {
+std::vector<ZoneAtStart> zones_of(const PlayConfig& play, Direction ego_direction, int ego_lane, double ego_s_m,
+                                  const Lanes& lanes) {
   std::vector<ZoneAtStart> out;
   for (const PlayClearZoneConfig& z : play.clear) {
     const int lane = ego_lane + z.lane_offset;
     if (lane < 0 || lane >= lanes.of(ego_direction)) continue;
-    const double a = play.trigger2_s_m + sign(ego_direction) * z.from_m;
-    const double b = play.trigger2_s_m + sign(ego_direction) * z.to_m;
+    const double a = ego_s_m + sign(ego_direction) * z.from_m;
+    const double b = ego_s_m + sign(ego_direction) * z.to_m;
     out.push_back({ego_direction, lane, std::min(a, b), std::max(a, b)});
   }
   return out;
@@ -83,17 +84,20 @@ bool in_zone(const ZoneAtStart& z, int lane, double s_m, double length_m) {
   return lane == z.lane && s_m + 0.5 * length_m > z.from_s_m && s_m - 0.5 * length_m < z.to_s_m;
 }
 
+const ZoneAtStart* zone_hit(const std::vector<ZoneAtStart>& zones, const ObservedVehicle& v, double s_m) {
+  for (const ZoneAtStart& z : zones) {
+    if (z.direction == v.direction && (in_zone(z, v.lane, s_m, v.length_m) || in_zone(z, v.target_lane, s_m, v.length_m))) {
+      return &z;
+    }
+  }
+  return nullptr;
+}
+
 std::optional<Clearance> clear_out(const ObservedVehicle& v, const std::vector<ZoneAtStart>& zones, double time_left_s,
                                    const std::vector<int>& role_lanes, const Lanes& lanes, const DirectorConfig& cfg) {
   const double t = std::max(time_left_s, 0.0);
   const double s_then = v.s_m + sign(v.direction) * v.speed_mps * t;
-  const ZoneAtStart* hit = nullptr;
-  for (const ZoneAtStart& z : zones) {
-    if (z.direction == v.direction && (in_zone(z, v.lane, s_then, v.length_m) || in_zone(z, v.target_lane, s_then, v.length_m))) {
-      hit = &z;
-      break;
-    }
-  }
+  const ZoneAtStart* hit = zone_hit(zones, v, s_then);
   if (hit == nullptr) return std::nullopt;
   // A neighbouring lane that no zone and no role needs.
   auto free_lane = [&](int lane) {

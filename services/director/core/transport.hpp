@@ -43,17 +43,21 @@ TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, doubl
                            double dt_s, const std::vector<ObservedVehicle>& world, const EgoObservation& ego,
                            const Lanes& lanes, const DirectorConfig& cfg, double rate_mps2);
 
-// A zone at the handover, in road s, in one lane of the ego's direction.
+// A zone at the handover, in road s, in one lane of the ego's direction, with the ego at
+// `ego_s_m` (trigger point 2 while preparing; where it is at the handover).
 struct ZoneAtStart {
   Direction direction = Direction::kForward;
   int lane = 0;
   double from_s_m = 0.0;  // lower s
   double to_s_m = 0.0;    // higher s
 };
-std::vector<ZoneAtStart> zones_of(const PlayConfig& play, Direction ego_direction, int ego_lane, const Lanes& lanes);
+std::vector<ZoneAtStart> zones_of(const PlayConfig& play, Direction ego_direction, int ego_lane, double ego_s_m,
+                                  const Lanes& lanes);
 
 // Does a vehicle of length `length_m` with its centre at `s_m` in `lane` overlap a zone?
 bool in_zone(const ZoneAtStart& z, int lane, double s_m, double length_m);
+// The first zone `v` overlaps with its centre at `s_m` (in either lane it occupies), or nullptr.
+const ZoneAtStart* zone_hit(const std::vector<ZoneAtStart>& zones, const ObservedVehicle& v, double s_m);
 
 // What a vehicle that would stand in a zone at the start is asked to do, if anything can help.
 struct Clearance {
