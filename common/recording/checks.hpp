@@ -3,7 +3,8 @@
 //   one_owner        no vehicle is published twice in a step (one owner per live vehicle)
 //   continuity       a vehicle is present in every step between its first and last appearance
 //   no_pop_in        no vehicle appears in the inner region (except those of the initial fill, in
-//                    the first two steps with vehicles) and none disappears there (except at the end)
+//                    the first two steps with vehicles) and none disappears there (except at the end:
+//                    an owner's last recorded step may be cut short by the recorder stopping)
 //   no_overlap       no two vehicles (ego included) of a direction overlap (length x width boxes)
 //   ego_interacts    the ego is the leader of a micro vehicle in some step, and a micro vehicle
 //                    the ego's leader in some step (the ego is a vehicle like any other to micro)
