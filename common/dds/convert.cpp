@@ -82,7 +82,8 @@ std::optional<std::string> check_control(const M& m, const SampleLimits& l) {
   }
   if (auto e = check_control_mode(m.mode())) return e;
   if (m.indicator() > kMaxIndicator) return "indicator " + std::to_string(m.indicator()) + " is not 0, 1 or 2";
-  if (m.speed_mps() < 0.0 || m.speed_mps() >= l.max_speed_mps) {
+  const bool own_speed = m.mode() == static_cast<int>(ControlMode::kTransported) && m.speed_mps() == kOwnDesiredSpeed_mps;
+  if (!own_speed && (m.speed_mps() < 0.0 || m.speed_mps() >= l.max_speed_mps)) {
     return "control speed " + std::to_string(m.speed_mps()) + " m/s out of range";
   }
   if (m.lane() < -1 || m.lane() > kMaxControlLane) return "control lane " + std::to_string(m.lane()) + " out of range";

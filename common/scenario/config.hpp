@@ -216,6 +216,7 @@ struct PlayConfig {
   double end_after_s = 30.0;       // the play ends this long after the handover
   double end_ego_beyond_s_m = -1;  // or once the ego passes this road position (< 0: no)
   double release_s = 5.0;          // the actors return to everyday driving over this time
+  double handover_wait_s = 6.0;    // beyond trigger point 2, wait at most this long for the start condition
 };
 
 // How the director prepares plays (scenario `director`).

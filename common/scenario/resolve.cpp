@@ -244,6 +244,7 @@ PlayConfig resolve_play(const Play& p, const Scenario& s, std::uint32_t id) {
   c.end_after_s = p.end().after_s();
   c.end_ego_beyond_s_m = p.end().has_ego_beyond_s_m() ? p.end().ego_beyond_s_m() : -1.0;
   c.release_s = p.release_s();
+  c.handover_wait_s = p.handover_wait_s();
   return c;
 }
 

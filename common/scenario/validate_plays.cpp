@@ -27,6 +27,9 @@ constexpr double kMinLaneChangeDuration_s = 1.0;
 constexpr double kMaxLaneChangeDuration_s = 10.0;
 constexpr double kMaxPlayDuration_s = 600.0;
 constexpr double kMaxRelease_s = 60.0;
+// Waiting longer than this for the start condition beyond trigger point 2 moves the event too far
+// from where it was placed (some 600 m at freeway speed).
+constexpr double kMaxHandoverWait_s = 20.0;
 
 std::string quoted(const std::string& s) { return "\"" + s + "\""; }
 
@@ -325,6 +328,7 @@ void check_play(const Cursor& pc, const Play& p, const Scenario& s) {
   check_lane_sequences(pc, p, s);
   check_end(pc, p, s, triggers);
   pc.range("release_s", p.release_s(), 0.0, kMaxRelease_s);
+  pc.range("handover_wait_s", p.handover_wait_s(), 0.0, kMaxHandoverWait_s);
 }
 
 }  // namespace

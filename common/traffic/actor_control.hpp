@@ -22,12 +22,17 @@ namespace entourage {
 
 enum class ControlMode : std::uint8_t { kAutonomous = 0, kTransported = 1, kControlled = 2, kReleasing = 3 };
 
+// A transported vehicle's desired speed that leaves the driver's own (a vehicle only asked to
+// change or keep its lane: given its present speed instead, it would never speed up again).
+inline constexpr double kOwnDesiredSpeed_mps = -1.0;
+
 const char* to_string(ControlMode m);
 
 struct ActorControl {
   ControlMode mode = ControlMode::kAutonomous;
   std::uint32_t play_id = 0;          // the play it acts in (meaningful unless autonomous)
-  double speed_mps = 0.0;             // transported: desired speed; controlled: target speed
+  double speed_mps = 0.0;             // transported: desired speed (kOwnDesiredSpeed: the driver's
+                                      // own); controlled: target speed
   double accel_mps2 = 1.0;            // controlled: rate of speeding up towards speed_mps (> 0)
   double decel_mps2 = 1.0;            // controlled: rate of slowing down towards speed_mps (> 0)
   double max_jerk_mps3 = 2.0;         // transported, releasing: limit on the rise of acceleration

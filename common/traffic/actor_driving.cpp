@@ -15,6 +15,7 @@ bool controlled(const Vehicle& v) { return v.control.mode == ControlMode::kContr
 
 double actor_desired_speed_mps(const Vehicle& v, double own_mps) {
   const ControlMode m = v.control.mode;
+  if (m == ControlMode::kTransported && v.control.speed_mps == kOwnDesiredSpeed_mps) return own_mps;
   return m == ControlMode::kTransported || m == ControlMode::kControlled ? v.control.speed_mps : own_mps;
 }
 

@@ -18,6 +18,9 @@
 namespace entourage {
 namespace {
 
+// A handover this soon after the ego passed trigger point 2 is at it (the same step).
+constexpr double kAtTrigger_s = 1e-6;
+
 double mean(const std::vector<double>& x) {
   if (x.empty()) return 0.0;
   double s = 0.0;
@@ -32,21 +35,27 @@ double percentile(std::vector<double> x, double q) {
   return x[std::min(i, x.size() - 1)];
 }
 
-// The failure's first reason without numbers, so equal causes group together.
+// The failure's first reason as its role and kind, so that equal causes group together:
+// "lead: position", "cutter: lane", "a vehicle in a clear zone", "truck: no actor".
 std::string cause_of(const std::string& detail) {
-  std::string c = detail.substr(0, detail.find(';'));
-  const auto colon = c.find(": ", c.find("met: ") == std::string::npos ? 0 : c.find("met: ") + 5);
-  std::string out;
-  for (char ch : c.substr(0, colon == std::string::npos ? c.size() : colon + 2)) {
-    if (!(std::isdigit(static_cast<unsigned char>(ch)) || ch == '.' || ch == '-')) out += ch;
+  const auto start = detail.find(": ");
+  if (detail.rfind("start condition not met", 0) != 0 || start == std::string::npos) return detail;
+  const std::string first = detail.substr(start + 2, detail.find(';', start) - start - 2);
+  if (first.find("in a clear zone") != std::string::npos) return "a vehicle in a clear zone";
+  const std::string role = first.substr(0, first.find(": "));
+  for (const auto& [text, kind] : {std::pair<const char*, const char*>{"start position", "position"},
+                                   {"start speed", "speed"},
+                                   {"in lane", "lane"},
+                                   {"no actor", "no actor"}}) {
+    if (first.find(text) != std::string::npos) return role + ": " + kind;
   }
-  return out;
+  return first;
 }
 
 void print_play(const std::string& name, const std::vector<bench::PlayRunResult>& runs,
                 const std::vector<bench::EgoVariant>& variants) {
-  std::vector<double> pos, speed, est, a_acc, a_dec, a_jerk, o_acc, o_dec, o_jerk;
-  int ok = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
+  std::vector<double> pos, speed, est, a_acc, a_dec, a_jerk, o_acc, o_dec, o_jerk, waits, beyond;
+  int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
   std::map<std::string, int> causes;
   std::map<std::string, std::pair<int, int>> by_variant;  // ok, runs
   for (std::size_t i = 0; i < runs.size(); ++i) {
@@ -56,6 +65,9 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
     if (r.handed_over) {
       ++ok;
       ++bv.first;
+      waits.push_back(r.handover_wait_s);
+      beyond.push_back(r.handover_beyond_m);
+      if (r.handover_wait_s < kAtTrigger_s) ++at_trigger;
     } else {
       ++causes[r.failure.empty() ? std::string("never reached trigger point 2") : cause_of(r.failure)];
     }
@@ -82,6 +94,10 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
   for (const auto& [v, c] : by_variant) std::printf("   %s %d/%d", v.c_str(), c.first, c.second);
   std::printf("\n");
   for (const auto& [c, k] : causes) std::printf("  failed %3d x  %s\n", k, c.c_str());
+  std::printf("handed over at trigger point 2 %d / %zu (%.1f %%); after waiting beyond it: %d, waited mean %.1f  p95 %.1f  max %.1f s, "
+              "the ego beyond it by mean %.0f  p95 %.0f  max %.0f m\n",
+              at_trigger, runs.size(), 100.0 * at_trigger / n, ok - at_trigger, mean(waits), percentile(waits, 0.95),
+              percentile(waits, 1.0), mean(beyond), percentile(beyond, 0.95), percentile(beyond, 1.0));
   std::printf("handover position error (m)    mean %.2f   p95 %.2f   (largest over the roles)\n", mean(pos), percentile(pos, 0.95));
   std::printf("handover speed error (km/h)    mean %.2f   p95 %.2f\n", 3.6 * mean(speed), 3.6 * percentile(speed, 0.95));
   std::printf("start-time estimate at trigger 1, |error| (s): mean %.2f   p95 %.2f\n", mean(est), percentile(est, 0.95));
@@ -156,9 +172,10 @@ int run(int argc, char** argv) {
       variants.push_back(v);
       if (verbose) {
         const bench::PlayRunResult& r = results.back();
-        std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s created %d  %s\n", i,
-                    static_cast<unsigned long long>(s), bench::to_string(v), director::to_string(r.final_phase),
-                    r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s, r.created, r.failure.c_str());
+        std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s waited %4.1f s created %d  %s\n",
+                    i, static_cast<unsigned long long>(s), bench::to_string(v), director::to_string(r.final_phase),
+                    r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s, r.handover_wait_s, r.created,
+                    r.failure.c_str());
       }
     }
     print_play(loaded.config.plays.front().name + " (" + loaded.config.name + ")", results, variants);

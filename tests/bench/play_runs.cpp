@@ -64,6 +64,8 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
   std::set<std::pair<VehicleId, VehicleId>> overlapping;     // pairs seen overlapping (each counted once)
   std::set<VehicleId> ego_contacts;
   double first_estimate_s = -1.0;
+  double trigger2_time_s = -1.0;
+  const PlayConfig& play = sc.plays.front();
   double end_time_s = -1.0;
   for (Step k = 0; k <= last && !cores.at_road_end(); ++k) {
     StepInput in = cores.next_input();
@@ -73,6 +75,9 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
     out.meso = cores.meso().step(in);
     out.director = cores.direct(in);
     const WindowBounds w = WindowBounds::around(in.ego.s_m, sc.window);
+    if (trigger2_time_s < 0.0 && sign(in.ego.direction) * (in.ego.s_m - play.trigger2_s_m) >= 0.0) {
+      trigger2_time_s = in.ego.time_s;
+    }
     for (const Handoff& h : out.director.births) {
       ++r.created;
       if (w.in_inner(h.vehicle.s_m)) ++r.created_in_view;
@@ -94,7 +99,11 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
         r.speed_error_mps = rep.speed_error_mps;
         if (first_estimate_s >= 0.0) r.estimate_error_s = first_estimate_s - in.ego.time_s;
       }
-      if (rep.phase == director::PlayPhase::kHandedOver) r.handed_over = true;
+      if (rep.phase == director::PlayPhase::kHandedOver) {
+        r.handed_over = true;
+        r.handover_wait_s = trigger2_time_s >= 0.0 ? in.ego.time_s - trigger2_time_s : 0.0;
+        r.handover_beyond_m = sign(in.ego.direction) * (in.ego.s_m - play.trigger2_s_m);
+      }
       if (rep.phase == director::PlayPhase::kFailed) r.failure = rep.detail;
       if ((rep.phase == director::PlayPhase::kDone || rep.phase == director::PlayPhase::kFailed) && end_time_s < 0.0) {
         end_time_s = in.ego.time_s + sc.plays.front().release_s + kAfterEnd_s;

@@ -48,6 +48,8 @@ struct PlayRunResult {
   double position_error_m = 0.0;     // at the handover, the largest over the roles
   double speed_error_mps = 0.0;
   double estimate_error_s = 0.0;     // first estimate (trigger point 1) - actual handover time
+  double handover_wait_s = 0.0;      // handed over this long after the ego passed trigger point 2
+  double handover_beyond_m = 0.0;    // and the ego this far beyond it
   MotionExtremes actors;             // while transported, in the inner region (micro)
   MotionExtremes autonomous;         // the autonomous vehicles of the inner region, same steps
   int created = 0;

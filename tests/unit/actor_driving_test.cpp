@@ -63,6 +63,16 @@ TEST(ActorDriving, ATransportedVehicleGoesToTheDirectorsLaneAndStaysThere) {
   EXPECT_FALSE(w.get(1).lane_change.active());
 }
 
+TEST(ActorDriving, AVehicleOnlyAskedForALaneKeepsItsOwnDesiredSpeed) {
+  MiniWorld w(testing::road_scenario(2, 0));
+  Vehicle v = car(1, Direction::kForward, 0, 1000.0, 20.0, 33.0);
+  v.control = transported(kOwnDesiredSpeed_mps, 1);
+  w.vehicles.push_back(v);
+  for (int i = 0; i < 900; ++i) w.step();
+  EXPECT_NEAR(w.get(1).speed_mps, 33.0, 0.3);
+  EXPECT_EQ(w.get(1).lane, 1);
+}
+
 TEST(ActorDriving, AnAutonomousDriverWouldHaveChangedLaneWhereATransportedOneKeepsIt) {
   // Behind a slow truck with a free left lane: MOBIL changes lane, an actor keeps its part.
   for (const bool actor : {false, true}) {

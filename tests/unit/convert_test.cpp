@@ -286,7 +286,14 @@ TEST(Convert, BadActorCommandsAreRefusedWithAReason) {
   m.max_jerk_mps3(0.0);
   EXPECT_NE(reason(m).find("jerk"), std::string::npos);
   m = good;
+  m.mode(static_cast<uint8_t>(ControlMode::kControlled));
   m.speed_mps(-1.0);
+  EXPECT_NE(reason(m).find("speed"), std::string::npos);
+  // Transported at the driver's own desired speed: the one negative value taken.
+  m.mode(static_cast<uint8_t>(ControlMode::kTransported));
+  m.speed_mps(kOwnDesiredSpeed_mps);
+  EXPECT_EQ(reason(m), "accepted");
+  m.speed_mps(-0.5);
   EXPECT_NE(reason(m).find("speed"), std::string::npos);
   m.speed_mps(100.0);
   EXPECT_NE(reason(m).find("speed"), std::string::npos);

@@ -99,11 +99,14 @@ PlayConfig lead_play() {
   return p;
 }
 
+// Aimed at the start: the ego at trigger point 2 at `speed_mps`, a minute from now.
+Aim at_trigger2(const PlayConfig& p, double speed_mps) { return {60.0, p.trigger2_s_m, speed_mps, 0.0}; }
+
 TEST(Casting, AVehicleThatCannotReachTheSlotInTimeOrMustPassTheEgoOnOneLaneCannotPlay) {
   const PlayConfig play = lead_play();
   DirectorConfig cfg;
   const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
-  const Slot slot = slots_of(play, Direction::kForward, 0, 25.0, Lanes{1, 1})[0];
+  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), Lanes{1, 1})[0];
   EXPECT_DOUBLE_EQ(slot.s_m, 3040.0);
   std::vector<ObservedVehicle> world = {vehicle(1, 2200.0, 24.0), vehicle(3, 1900.0, 30.0)};
   const CastingSituation at{world, ego, 40.0, 3000.0, Lanes{1, 1}, {}};
@@ -138,7 +141,7 @@ TEST(Casting, NewVehiclesAreCreatedOutOfSightWithASafeGap) {
   ScenarioConfig sc = testing::road_scenario(2, 0);
   const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
   const WindowBounds w = WindowBounds::around(ego.s_m, sc.window);
-  const Slot slot = slots_of(play, Direction::kForward, 0, 25.0, Lanes{2, 0})[0];
+  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), Lanes{2, 0})[0];
   for (double t : {10.0, 20.0, 30.0, 40.0, 60.0}) {
     std::vector<ObservedVehicle> world;
     const CastingSituation at{world, ego, t, 3000.0, Lanes{2, 0}, {}};
@@ -182,7 +185,7 @@ TEST(Staging, APlayThatDoesNotFitBesideTheEgosLaneIsMirrored) {
   EXPECT_EQ(m.clear[1].lane_offset, -1);
   EXPECT_EQ(m.actions[0].indicator, 1);
   EXPECT_EQ(m.actions[1].lane_offset, 1);
-  EXPECT_EQ(slots_of(m, Direction::kForward, 1, 25.0, Lanes{2, 0})[0].lane, 0);
+  EXPECT_EQ(slots_of(m, Direction::kForward, 1, at_trigger2(m, 25.0), Lanes{2, 0})[0].lane, 0);
   // The middle lane of three: both sides fit, as written.
   EXPECT_EQ(staged_beside(play, 1, Lanes{3, 0}).roles[0].lane_offset, 1);
 }
@@ -192,7 +195,7 @@ TEST(Staging, APlayThatDoesNotFitBesideTheEgosLaneIsMirrored) {
 TEST(Transport, AnActorTrackingItsCommandReachesTheSlotWithinAMetreAndTheSlotSpeed) {
   const PlayConfig play = lead_play();
   DirectorConfig cfg;
-  const Slot slot = slots_of(play, Direction::kForward, 0, 25.0, Lanes{2, 0})[0];
+  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), Lanes{2, 0})[0];
   // 840 m in 40 s, from 20 m/s to the ego's 25: cruise near 20, speed up at the end.
   ObservedVehicle actor = vehicle(1, 2200.0, 20.0);
   const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
@@ -221,24 +224,30 @@ TEST(Transport, AVehicleThatWouldStandInAClearZoneIsSentToTheNextLaneOrOutOfTheZ
   PlayConfig play = lead_play();
   play.clear = {{0, 5.0, 40.0}};
   DirectorConfig cfg;
+  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0, 1);  // beside, in the left lane
   // At 25 m/s for 40 s, vehicle 1 ends 20 m ahead of the ego's handover position: in the zone.
   const ObservedVehicle v = vehicle(1, 2020.0, 25.0);
-  const auto two = clear_out(v, zones_of(play, Direction::kForward, 0, 3000.0, Lanes{2, 0}), 40.0, {0}, Lanes{2, 0}, cfg);
+  auto clear = [&](const ObservedVehicle& x, const PlayConfig& p, const Lanes& lanes, const EgoObservation& e) {
+    return clear_out(x, zones_of(p, Direction::kForward, 0, 3000.0, lanes), 40.0, e, 3000.0, {0}, lanes, cfg);
+  };
+  const auto two = clear(v, play, Lanes{2, 0}, ego);
   ASSERT_TRUE(two.has_value());
   EXPECT_EQ(two->lane, 1);
-  // Both lanes zones: out by its speed, ahead of the zone or behind it at the start.
+  // Both lanes zones: out by its speed, ahead of the zone or behind it at the start, whichever
+  // is the smaller change: behind.
   PlayConfig both = play;
   both.clear.push_back({1, 5.0, 40.0});
-  const auto out = clear_out(v, zones_of(both, Direction::kForward, 0, 3000.0, Lanes{2, 0}), 40.0, {0}, Lanes{2, 0}, cfg);
+  const auto out = clear(v, both, Lanes{2, 0}, ego);
   ASSERT_TRUE(out.has_value());
   EXPECT_EQ(out->lane, 0);
-  const double s_then = v.s_m + out->speed_mps * 40.0;
-  EXPECT_TRUE(s_then > 3040.0 + 2.25 || s_then < 3005.0 - 2.25) << s_then;
+  EXPECT_NEAR(v.s_m + out->speed_mps * 40.0, 3005.0 - 2.25 - 5.0, 1e-9);
+  // With the ego behind it in its lane it cannot fall behind the ego: ahead of the zone.
+  const auto ahead = clear(v, both, Lanes{2, 0}, testing::ego_at(0, 2000.0, 25.0, 0));
+  ASSERT_TRUE(ahead.has_value());
+  EXPECT_NEAR(v.s_m + ahead->speed_mps * 40.0, 3040.0 + 2.25 + 5.0, 1e-9);
   // On one lane it would have to overtake or be overtaken: left to its own driving.
-  EXPECT_FALSE(clear_out(v, zones_of(play, Direction::kForward, 0, 3000.0, Lanes{1, 1}), 40.0, {0}, Lanes{1, 1}, cfg).has_value());
-  EXPECT_FALSE(clear_out(vehicle(2, 2500.0, 25.0), zones_of(play, Direction::kForward, 0, 3000.0, Lanes{2, 0}), 40.0, {0},
-                         Lanes{2, 0}, cfg)
-                   .has_value());
+  EXPECT_FALSE(clear(v, play, Lanes{1, 1}, ego).has_value());
+  EXPECT_FALSE(clear(vehicle(2, 2500.0, 25.0), play, Lanes{2, 0}, ego).has_value());
 }
 
 // --- Script
@@ -302,9 +311,110 @@ TEST(PlayPhases, WaitingPreparingThenFailedWithTheReasonWhenNoActorCouldBeCast) 
   in.step = 3;
   in.ego = testing::ego_at(3, 3000.5, 25.0);
   out = core.step(in);
+  for (const PlayReport& r : out.reports) EXPECT_NE(r.phase, PlayPhase::kFailed);  // waits for an actor
+  in.step = 63;  // handover_wait_s (6 s) beyond trigger point 2
+  in.ego = testing::ego_at(63, 3150.5, 25.0);
+  out = core.step(in);
   ASSERT_EQ(out.reports.size(), 1U);
   EXPECT_EQ(out.reports[0].phase, PlayPhase::kFailed);
   EXPECT_NE(out.reports[0].detail.find("lead: no actor"), std::string::npos) << out.reports[0].detail;
+}
+
+// A play driven to trigger point 2 with one vehicle cast as the lead, then the ego `past_m`
+// beyond it with the lead `miss_m` from its start position. Returns the core and the last input.
+struct AtTrigger2 {
+  DirectorCore core;
+  StepInput in;
+  DirectorOutput out;
+};
+void drive_to_trigger2(AtTrigger2& t, double miss_m) {
+  StepInput& in = t.in;
+  in.world_prev = {vehicle(7, 2100.0, 25.0)};
+  for (Step k = 0; k < 3; ++k) {  // trigger point 1; cast; transporting
+    in.step = k;
+    in.ego = testing::ego_at(k, 2000.0 + 2.5 * static_cast<double>(k), 25.0);
+    t.out = t.core.step(in);
+  }
+  in.step = 3;
+  in.ego = testing::ego_at(3, 3000.5, 25.0);
+  in.world_prev = {vehicle(7, 3000.5 + 40.0 + miss_m, 25.0)};
+  t.out = t.core.step(in);
+}
+
+TEST(PlayPhases, BeyondTriggerPoint2TheHandoverWaitsForTheStartCondition) {
+  ScenarioConfig sc = testing::minimal_scenario();
+  sc.plays = {lead_play()};
+  AtTrigger2 t{DirectorCore(sc, 1), {}, {}};
+  drive_to_trigger2(t, 25.0);  // 25 m too far ahead, the tolerance is 10 m
+  for (const PlayReport& r : t.out.reports) EXPECT_NE(r.phase, PlayPhase::kFailed) << r.detail;
+  // Two seconds later it is in place: handed over, and the report says how late.
+  t.in.step = 23;
+  t.in.ego = testing::ego_at(23, 3050.5, 25.0);
+  t.in.world_prev = {vehicle(7, 3050.5 + 43.0, 25.0)};
+  t.out = t.core.step(t.in);
+  ASSERT_FALSE(t.out.reports.empty());
+  EXPECT_EQ(t.out.reports.front().phase, PlayPhase::kHandedOver);
+  EXPECT_NE(t.out.reports.front().detail.find("2.0 s beyond trigger point 2"), std::string::npos)
+      << t.out.reports.front().detail;
+}
+
+TEST(PlayPhases, AStartConditionStillNotMetAfterTheWaitFailsWithTheReason) {
+  ScenarioConfig sc = testing::minimal_scenario();
+  sc.plays = {lead_play()};
+  sc.plays[0].handover_wait_s = 3.0;
+  AtTrigger2 t{DirectorCore(sc, 1), {}, {}};
+  drive_to_trigger2(t, 25.0);
+  t.in.step = 33;
+  t.in.ego = testing::ego_at(33, 3075.5, 25.0);
+  t.in.world_prev = {vehicle(7, 3075.5 + 40.0 + 20.0, 25.0)};
+  t.out = t.core.step(t.in);
+  ASSERT_FALSE(t.out.reports.empty());
+  EXPECT_EQ(t.out.reports.front().phase, PlayPhase::kFailed);
+  EXPECT_NE(t.out.reports.front().detail.find("(3.0 s beyond trigger point 2): lead: 20.0 m from its start position"),
+            std::string::npos)
+      << t.out.reports.front().detail;
+}
+
+TEST(PlayPhases, WithoutAWaitTheStartConditionIsCheckedAtTriggerPoint2) {
+  ScenarioConfig sc = testing::minimal_scenario();
+  sc.plays = {lead_play()};
+  sc.plays[0].handover_wait_s = 0.0;
+  AtTrigger2 t{DirectorCore(sc, 1), {}, {}};
+  drive_to_trigger2(t, 25.0);
+  ASSERT_FALSE(t.out.reports.empty());
+  EXPECT_EQ(t.out.reports.front().phase, PlayPhase::kFailed);
+  EXPECT_NE(t.out.reports.front().detail.find("start condition not met: lead: 25.0 m"), std::string::npos)
+      << t.out.reports.front().detail;
+}
+
+// --- Aiming
+
+TEST(Aim, FarFromTheStartActorsAimAtTriggerPoint2NearItAShortHorizonAhead) {
+  const EgoObservation ego = testing::ego_at(0, 2900.0, 25.0);
+  const Aim far = aim_of(30.0, 3000.0, 24.0, ego, 4.0);
+  EXPECT_DOUBLE_EQ(far.time_s, 30.0);
+  EXPECT_DOUBLE_EQ(far.ego_s_m, 3000.0);
+  EXPECT_DOUBLE_EQ(far.ego_speed_mps, 24.0);
+  EXPECT_DOUBLE_EQ(far.past_start_s, 0.0);
+  const Aim near = aim_of(1.0, 3000.0, 24.0, ego, 4.0);
+  EXPECT_DOUBLE_EQ(near.time_s, 4.0);
+  EXPECT_DOUBLE_EQ(near.ego_s_m, 3000.0);  // 2900 + 25 m/s x 4 s
+  EXPECT_DOUBLE_EQ(near.past_start_s, 3.0);
+  // A role slower than the ego by 5 m/s stands 40 m ahead at the start, 25 m ahead 3 s later; an
+  // oncoming one at 20 m/s comes 45 m/s closer each second.
+  PlayConfig play = lead_play();
+  play.roles[0].speed_mps = -5.0;
+  PlayRoleConfig oncoming;
+  oncoming.name = "oncoming";
+  oncoming.direction = Direction::kBackward;
+  oncoming.ahead_m = 300.0;
+  oncoming.absolute_speed = true;
+  oncoming.speed_mps = 20.0;
+  play.roles.push_back(oncoming);
+  const std::vector<Slot> slots = slots_of(play, Direction::kForward, 0, near, Lanes{1, 1});
+  EXPECT_DOUBLE_EQ(slots[0].s_m, 3000.0 + 40.0 - 5.0 * 3.0);
+  EXPECT_DOUBLE_EQ(slots[0].speed_mps, 20.0);
+  EXPECT_DOUBLE_EQ(slots[1].s_m, 3000.0 + 300.0 - 45.0 * 3.0);
 }
 
 }  // namespace

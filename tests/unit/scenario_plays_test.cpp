@@ -82,6 +82,7 @@ const std::string kFullPlay = R"(play {
   clear { lane_offset: 1 from_m: -50 to_m: 80 }
   end { after_s: 45 ego_beyond_s_m: 3500 }
   release_s: 8
+  handover_wait_s: 3
 }
 play {
   name: "defaults"
@@ -174,12 +175,14 @@ TEST(ScenarioPlays, AFullPlayResolvesToSiValues) {
   EXPECT_DOUBLE_EQ(p.end_after_s, 45.0);
   EXPECT_DOUBLE_EQ(p.end_ego_beyond_s_m, 3500.0);
   EXPECT_DOUBLE_EQ(p.release_s, 8.0);
+  EXPECT_DOUBLE_EQ(p.handover_wait_s, 3.0);
 
   const PlayConfig& d = l.config.plays[1];
   EXPECT_EQ(d.id, 2U);
   EXPECT_DOUBLE_EQ(d.end_after_s, 30.0);
   EXPECT_LT(d.end_ego_beyond_s_m, 0.0);
   EXPECT_DOUBLE_EQ(d.release_s, 5.0);
+  EXPECT_DOUBLE_EQ(d.handover_wait_s, 6.0);
   EXPECT_TRUE(d.clear.empty());
 
   const DirectorConfig& dc = l.config.director;
@@ -353,6 +356,8 @@ TEST(ScenarioPlays, EachMistakeIsRefusedWithTheFieldNamed) {
        "got 20000"},
       {"long release", play(kRole + "  release_s: 100\n"), "play[0].release_s", "[0, 60] (got 100)"},
       {"negative release", play(kRole + "  release_s: -1\n"), "play[0].release_s", "got -1"},
+      {"long handover wait", play(kRole + "  handover_wait_s: 30\n"), "play[0].handover_wait_s", "[0, 20] (got 30)"},
+      {"negative handover wait", play(kRole + "  handover_wait_s: -1\n"), "play[0].handover_wait_s", "got -1"},
       {"no acceleration memory", "director { accel_memory_s: 0 }\n", "director.accel_memory_s", "got 0"},
       {"zero speed offset", "director { max_speed_offset_kph: 0 }\n", "director.max_speed_offset_kph", "got 0"},
       {"negative minimum speed", "director { min_speed_kph: -5 }\n", "director.min_speed_kph", "got -5"},

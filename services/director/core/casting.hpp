@@ -18,8 +18,8 @@ namespace entourage::director {
 struct CastingSituation {
   const std::vector<ObservedVehicle>& world;
   const EgoObservation& ego;
-  double time_to_start_s = 0.0;     // until the ego reaches trigger point 2 (estimated)
-  double ego_s_at_handover_m = 0.0; // trigger point 2
+  double time_to_start_s = 0.0;     // until the aim (stage.hpp: the start, or a short horizon)
+  double ego_s_at_handover_m = 0.0; // where the ego is then
   Lanes lanes;
   TypeAccels type_accel_mps2;
 };

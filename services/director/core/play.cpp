@@ -27,6 +27,9 @@ constexpr double kHopelessFor_s = 3.0;
 // kBesideZone_m of it, where they will be then) keep their lane.
 constexpr double kHoldLanesBefore_s = 15.0;
 constexpr double kBesideZone_m = 30.0;
+// Closer to the start than this, and while the handover waits, the actors are aimed this far
+// ahead (stage.hpp, aim_of): a plan that runs out of time would otherwise stop correcting.
+constexpr double kAimHorizon_s = 4.0;
 
 std::string fmt1(double x) {
   std::ostringstream os;
@@ -152,8 +155,15 @@ PlayOutput PlayRun::step(const PlayInput& in) {
     case PlayPhase::kCast:
     case PlayPhase::kTransporting:
       if (x >= dir * play_.trigger2_s_m) {
-        hand_over(in, out);
-        return out;
+        // Beyond trigger point 2: hand over as soon as the start condition holds; until then
+        // (at most handover_wait_s) the actors keep closing on their places.
+        if (trigger2_time_s_ < 0.0) trigger2_time_s_ = in.ego.time_s;
+        const std::string problems = start_problems(in);
+        if (problems.empty() || in.ego.time_s - trigger2_time_s_ >= play_.handover_wait_s - 1e-9) {
+          hand_over(in, problems, out);
+          return out;
+        }
+        waiting_for_ = problems;
       }
       prepare(in, out);
       break;
@@ -174,7 +184,7 @@ PlayOutput PlayRun::step(const PlayInput& in) {
                             in.ego.time_s - last_progress_report_s_ >= kProgressReportInterval_s - 1e-9;
   if (first_report_ || before != phase_ || estimate_moved || progress_due) {
     if (progress_due) last_progress_report_s_ = in.ego.time_s;
-    report(in, out, "");
+    report(in, out, waiting_for_.empty() ? "" : "beyond trigger point 2, waiting: " + waiting_for_);
   }
   first_report_ = false;
   return out;
@@ -182,15 +192,19 @@ PlayOutput PlayRun::step(const PlayInput& in) {
 
 void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
   const double distance = sign(in.ego.direction) * (play_.trigger2_s_m - in.ego.s_m);
-  const Prediction pred = estimator_.predict(distance);
-  if (pred.time_s < 0.0) {  // the ego stands: nothing can be timed, actors hold what they have
-    estimated_start_s_ = -1.0;
-    return;
+  Prediction pred{0.0, in.ego.speed_mps};  // beyond trigger point 2: the start is now
+  if (distance > 0.0) {
+    pred = estimator_.predict(distance);
+    if (pred.time_s < 0.0) {  // the ego stands: nothing can be timed, actors hold what they have
+      estimated_start_s_ = -1.0;
+      return;
+    }
+    estimated_start_s_ = in.ego.time_s + pred.time_s;
   }
-  estimated_start_s_ = in.ego.time_s + pred.time_s;
+  const Aim aim = aim_of(pred.time_s, play_.trigger2_s_m, pred.speed_mps, in.ego, kAimHorizon_s);
   // The lane the ego is in, or moving to.
   staged_ = staged_beside(play_, in.ego.target_lane, setting_.lanes);
-  const std::vector<Slot> slots = slots_of(staged_, in.ego.direction, in.ego.target_lane, pred.speed_mps, setting_.lanes);
+  const std::vector<Slot> slots = slots_of(staged_, in.ego.direction, in.ego.target_lane, aim, setting_.lanes);
   // Actors that left the world (beyond the window) are lost: their roles are cast again.
   for (Role& r : roles_) {
     if (r.actor == kNoVehicle || find(in, r.actor) != nullptr) continue;
@@ -202,7 +216,7 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
   std::string cast_detail;
   if (uncast && in.ego.time_s - last_cast_attempt_s_ >= kCastInterval_s - 1e-9) {
     last_cast_attempt_s_ = in.ego.time_s;
-    cast_detail = cast(in, slots, pred.time_s, out);
+    cast_detail = cast(in, slots, aim, out);
   }
   const bool all_cast = std::none_of(roles_.begin(), roles_.end(), [](const Role& r) { return r.actor == kNoVehicle; });
   if (all_cast && phase_ == PlayPhase::kPreparing) {
@@ -210,12 +224,12 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
   } else if (all_cast && phase_ == PlayPhase::kCast) {
     phase_ = PlayPhase::kTransporting;
   }
-  move_actors(in, slots, pred.time_s, out);
-  clear_zones(in, slots, pred.time_s, out);
+  move_actors(in, slots, aim.time_s, pred.time_s, out);
+  clear_zones(in, slots, aim, pred.time_s, out);
   if (!cast_detail.empty()) report(in, out, "cast: " + cast_detail);
 }
 
-std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
+std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, PlayOutput& out) {
   // Only the roles still without an actor are cast; the others keep theirs.
   std::vector<std::size_t> open;
   std::vector<PlayRoleConfig> sub_roles;
@@ -226,8 +240,14 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, d
     sub_roles.push_back(play_.roles[r]);
     sub_slots.push_back(slots[r]);
   }
-  const CastingSituation at{in.world, in.ego, time_left_s, play_.trigger2_s_m, setting_.lanes, setting_.type_accel_mps2};
-  const std::vector<int> chosen = cast_roles(sub_slots, sub_roles, in.available, at, setting_.director);
+  const CastingSituation at{in.world, in.ego, aim.time_s, aim.ego_s_m, setting_.lanes, setting_.type_accel_mps2};
+  // Vehicles this play cleared off the stage may be cast too (one in the way of an actor that
+  // cannot get into its lane may be the better actor).
+  std::vector<bool> castable = in.available;
+  for (std::size_t i = 0; i < in.world.size(); ++i) {
+    if (std::find(cleared_.begin(), cleared_.end(), in.world[i].id) != cleared_.end()) castable[i] = true;
+  }
+  const std::vector<int> chosen = cast_roles(sub_slots, sub_roles, castable, at, setting_.director);
   const WindowBounds window = WindowBounds::around(in.ego.s_m, setting_.window);
   std::string detail;
   for (std::size_t k = 0; k < open.size(); ++k) {
@@ -243,6 +263,7 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, d
       replace();
       const ObservedVehicle& v = in.world[static_cast<std::size_t>(chosen[k])];
       in.available[static_cast<std::size_t>(chosen[k])] = false;
+      cleared_.erase(std::remove(cleared_.begin(), cleared_.end(), v.id), cleared_.end());
       role = Role{v.id, false, in.step, -1.0, 0.0, 0.0};
       detail += (detail.empty() ? "" : ", ") + rc.name + " = vehicle " + std::to_string(v.id);
       continue;
@@ -263,20 +284,21 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, d
   return detail;
 }
 
-void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
+void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, double aim_time_s, double time_to_start_s,
+                          PlayOutput& out) {
   for (std::size_t r = 0; r < roles_.size(); ++r) {
     Role& role = roles_[r];
     if (role.actor == kNoVehicle) continue;
     const ObservedVehicle* v = find(in, role.actor);
     if (v == nullptr) continue;  // a created vehicle not seen yet
     const double rate = transport_rate_mps2(setting_.director, accel_of(setting_.type_accel_mps2, v->type_index));
-    const TransportCommand t = transport(slots[r], *v, time_left_s, role.command_mps, in.dt_s, in.world, in.ego,
+    const TransportCommand t = transport(slots[r], *v, aim_time_s, role.command_mps, in.dt_s, in.world, in.ego,
                                          setting_.lanes, setting_.director, rate);
     role.command_mps = t.speed_mps;
     role.position_error_m = t.position_error_m;
     role.speed_error_mps = t.speed_error_mps;
     const bool hopeless = std::abs(t.position_error_m) > kHopelessMiss * play_.roles[r].position_tolerance_m ||
-                          (v->lane != slots[r].lane && v->target_lane != slots[r].lane && time_left_s < kLateLaneChange_s);
+                          (v->lane != slots[r].lane && v->target_lane != slots[r].lane && time_to_start_s < kLateLaneChange_s);
     if (!hopeless) {
       role.hopeless_since_s = -1.0;
     } else if (role.hopeless_since_s < 0.0) {
@@ -286,10 +308,17 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
   }
 }
 
-void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
-  if (play_.clear.empty()) return;
-  const std::vector<ZoneAtStart> zones =
-      zones_of(staged_, in.ego.direction, in.ego.target_lane, play_.trigger2_s_m, setting_.lanes);
+void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
+                          PlayOutput& out) {
+  const std::vector<ZoneAtStart> zones = zones_of(staged_, in.ego.direction, in.ego.target_lane, aim.ego_s_m, setting_.lanes);
+  // What to clear: the play's zones and the room the actors need at their starts.
+  std::vector<double> lengths;
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
+    const ObservedVehicle* v = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    lengths.push_back(v != nullptr ? v->length_m : in.factory.length_m(std::max(play_.roles[r].type_index, 0)));
+  }
+  std::vector<ZoneAtStart> to_clear = slot_zones(slots, lengths, in.ego.direction);
+  to_clear.insert(to_clear.end(), zones.begin(), zones.end());
   std::vector<int> role_lanes;
   for (const Slot& s : slots) {
     if (s.direction == in.ego.direction) role_lanes.push_back(s.lane);
@@ -298,7 +327,8 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, d
     const ObservedVehicle& v = in.world[i];
     const bool ours = std::find(cleared_.begin(), cleared_.end(), v.id) != cleared_.end();
     if (!ours && !in.available[i]) continue;  // an actor (ours or another play's)
-    const auto c = clear_out(v, zones, time_left_s, role_lanes, setting_.lanes, setting_.director);
+    const auto c =
+        clear_out(v, to_clear, aim.time_s, in.ego, aim.ego_s_m, role_lanes, setting_.lanes, setting_.director);
     if (!c) continue;  // not in the way (a cleared one keeps its last command until the handover)
     if (!ours) {
       cleared_.push_back(v.id);
@@ -306,14 +336,14 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, d
     }
     command(v.id, transported(c->speed_mps, c->lane), in.step, out);
   }
-  if (time_left_s > kHoldLanesBefore_s) return;
-  // Shortly before the start, vehicles beside a zone keep their lane (their speed too), so that
+  if (time_to_start_s > kHoldLanesBefore_s) return;
+  // Shortly before the start, vehicles beside a zone keep their lane (at their own speed), so that
   // none changes into it at the last moment.
   for (std::size_t i = 0; i < in.world.size(); ++i) {
     const ObservedVehicle& v = in.world[i];
     const bool ours = std::find(cleared_.begin(), cleared_.end(), v.id) != cleared_.end();
     if (ours || !in.available[i] || v.lane != v.target_lane) continue;
-    const double s_then = v.s_m + sign(v.direction) * v.speed_mps * time_left_s;
+    const double s_then = v.s_m + sign(v.direction) * v.speed_mps * aim.time_s;
     const bool beside = std::any_of(zones.begin(), zones.end(), [&](const ZoneAtStart& z) {
       return z.direction == v.direction && std::abs(v.lane - z.lane) == 1 && s_then > z.from_s_m - kBesideZone_m &&
              s_then < z.to_s_m + kBesideZone_m;
@@ -321,17 +351,15 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, d
     if (!beside) continue;
     cleared_.push_back(v.id);
     in.available[i] = false;
-    command(v.id, transported(v.speed_mps, v.lane), in.step, out);
+    command(v.id, transported(kOwnDesiredSpeed_mps, v.lane), in.step, out);
   }
 }
 
-void PlayRun::hand_over(const PlayInput& in, PlayOutput& out) {
-  handover_time_s_ = in.ego.time_s;
+std::string PlayRun::start_problems(const PlayInput& in) {
   staged_ = staged_beside(play_, in.ego.target_lane, setting_.lanes);
   const int dir = sign(in.ego.direction);
   std::string problems;
   auto problem = [&](const std::string& p) { problems += (problems.empty() ? "" : "; ") + p; };
-  scripted_.assign(roles_.size(), ActorControl{});
   for (std::size_t r = 0; r < roles_.size(); ++r) {
     Role& role = roles_[r];
     const PlayRoleConfig& rc = staged_.roles[r];
@@ -353,33 +381,43 @@ void PlayRun::hand_over(const PlayInput& in, PlayOutput& out) {
       problem(rc.name + ": " + fmt1(role.speed_error_mps * 3.6) + " km/h from its start speed");
     }
     if (v->lane != lane && v->target_lane != lane) problem(rc.name + ": in lane " + std::to_string(v->lane) + ", not " + std::to_string(lane));
-    ActorControl c;
-    c.mode = ControlMode::kControlled;
-    c.play_id = play_.id;
-    c.speed_mps = v->speed_mps;  // holds its speed until the script says otherwise
-    c.accel_mps2 = c.decel_mps2 = 1.0;
-    c.max_jerk_mps3 = setting_.director.max_jerk_mps3;
-    scripted_[r] = c;
   }
-  // The zones around where the ego is now (it has just passed trigger point 2).
+  // The zones around where the ego is now.
   const std::vector<ZoneAtStart> zones = zones_of(staged_, in.ego.direction, in.ego.target_lane, in.ego.s_m, setting_.lanes);
   for (const ObservedVehicle& v : in.world) {
     const bool actor = std::any_of(roles_.begin(), roles_.end(), [&](const Role& r) { return r.actor == v.id; });
     if (actor) continue;
     if (zone_hit(zones, v, v.s_m) != nullptr) problem("vehicle " + std::to_string(v.id) + " in a clear zone");
   }
+  return problems;
+}
+
+void PlayRun::hand_over(const PlayInput& in, const std::string& problems, PlayOutput& out) {
+  handover_time_s_ = in.ego.time_s;
+  const double waited_s = in.ego.time_s - trigger2_time_s_;
+  const std::string after = waited_s > 1e-9 ? " (" + fmt1(waited_s) + " s beyond trigger point 2)" : "";
   // Cleared vehicles drive on as they like again.
   for (VehicleId id : cleared_) command(id, releasing(), in.step, out);
   if (!problems.empty()) {
     phase_ = PlayPhase::kFailed;
     release_all(in, out);
-    report(in, out, "start condition not met: " + problems);
+    report(in, out, "start condition not met" + after + ": " + problems);
     return;
   }
   phase_ = PlayPhase::kHandedOver;
+  scripted_.assign(roles_.size(), ActorControl{});
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
+    ActorControl c;
+    c.mode = ControlMode::kControlled;
+    c.play_id = play_.id;
+    c.speed_mps = find(in, roles_[r].actor)->speed_mps;  // holds its speed until the script says otherwise
+    c.accel_mps2 = c.decel_mps2 = 1.0;
+    c.max_jerk_mps3 = setting_.director.max_jerk_mps3;
+    scripted_[r] = c;
+  }
   script_.emplace(staged_);
   for (std::size_t r = 0; r < roles_.size(); ++r) command(roles_[r].actor, scripted_[r], in.step, out);
-  report(in, out, "every role in place; the script starts");
+  report(in, out, "every role in place" + after + "; the script starts");
   run(in, out);
 }
 

@@ -6,10 +6,13 @@
 //                 created out of sight), recast when an actor is lost
 //   cast          every role has an actor
 //   transporting  actors on their way to their start positions, vehicles cleared off the zones
-//   handed over   the ego passed trigger point 2 with every role in place (within tolerance)
+//   handed over   the ego passed trigger point 2 and every role is in place (within tolerance),
+//                 no other vehicle in a clear zone; beyond trigger point 2 the actors keep
+//                 closing on their places for at most handover_wait_s until that holds
 //   running       the first scripted action started
 //   done          the end condition held; actors released (back to everyday driving over release_s)
-//   failed        the start condition was not met (the reason says which role or zone); released
+//   failed        the start condition was not met by then (the reason says which role or zone);
+//                 released
 //
 // Each step: observe the ego; act on the phase; say what changed. Commands are only written when
 // a vehicle's control changes.
@@ -115,10 +118,15 @@ class PlayRun {
 
   void prepare(const PlayInput& in, PlayOutput& out);
   // Casts the roles without an actor; returns what it did ("" for nothing).
-  std::string cast(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out);
-  void move_actors(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out);
-  void clear_zones(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out);
-  void hand_over(const PlayInput& in, PlayOutput& out);
+  std::string cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, PlayOutput& out);
+  void move_actors(const PlayInput& in, const std::vector<Slot>& slots, double aim_time_s, double time_to_start_s,
+                   PlayOutput& out);
+  void clear_zones(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
+                   PlayOutput& out);
+  // What keeps the start condition from holding now ("" : nothing); sets the roles' errors.
+  std::string start_problems(const PlayInput& in);
+  // Hands over to the script, or fails with `problems` if there are any.
+  void hand_over(const PlayInput& in, const std::string& problems, PlayOutput& out);
   void run(const PlayInput& in, PlayOutput& out);
   void release_all(const PlayInput& in, PlayOutput& out);
   void finish_release(const PlayInput& in, PlayOutput& out);
@@ -146,6 +154,8 @@ class PlayRun {
   double estimated_start_s_ = -1.0;
   double reported_estimate_s_ = -1.0;
   double handover_time_s_ = -1.0;
+  double trigger2_time_s_ = -1.0;  // when the ego passed trigger point 2 (< 0: not yet)
+  std::string waiting_for_;        // beyond trigger point 2: what the start condition still lacks
   double release_until_s_ = -1.0;
   double last_cast_attempt_s_ = -1e9;
   double last_progress_report_s_ = -1e9;

@@ -40,18 +40,26 @@ PlayConfig staged_beside(const PlayConfig& play, int ego_lane, const Lanes& lane
   return m;
 }
 
-std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int ego_lane, double ego_speed_mps,
+Aim aim_of(double time_to_start_s, double trigger2_s_m, double speed_at_start_mps, const EgoObservation& ego,
+           double horizon_s) {
+  if (time_to_start_s >= horizon_s) return {time_to_start_s, trigger2_s_m, speed_at_start_mps, 0.0};
+  const double v = std::max(ego.speed_mps, 0.0);
+  return {horizon_s, ego.s_m + sign(ego.direction) * v * horizon_s, v, horizon_s - std::max(time_to_start_s, 0.0)};
+}
+
+std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int ego_lane, const Aim& aim,
                            const Lanes& lanes) {
   std::vector<Slot> out;
   out.reserve(play.roles.size());
-  const double ego_s = play.trigger2_s_m;
   for (const PlayRoleConfig& r : play.roles) {
     Slot s;
     s.direction = r.direction == Direction::kForward ? ego_direction : Direction{static_cast<std::int8_t>(-sign(ego_direction))};
     const int lane = r.direction == Direction::kForward ? ego_lane + r.lane_offset : r.lane_offset;
     s.lane = std::clamp(lane, 0, std::max(0, lanes.of(s.direction) - 1));
-    s.s_m = ego_s + sign(ego_direction) * r.ahead_m;
-    s.speed_mps = std::max(0.0, r.absolute_speed ? r.speed_mps : ego_speed_mps + r.speed_mps);
+    s.speed_mps = std::max(0.0, r.absolute_speed ? r.speed_mps : aim.ego_speed_mps + r.speed_mps);
+    // Along the ego's direction: an oncoming role's start speed takes it the other way.
+    const double relative_mps = sign(s.direction) * sign(ego_direction) * s.speed_mps - aim.ego_speed_mps;
+    s.s_m = aim.ego_s_m + sign(ego_direction) * (r.ahead_m + relative_mps * aim.past_start_s);
     out.push_back(s);
   }
   return out;

@@ -38,9 +38,28 @@ inline double accel_of(const TypeAccels& a, std::uint8_t type_index) {
 // that cuts in from the left of an ego in the left lane cuts in from the right).
 PlayConfig staged_beside(const PlayConfig& play, int ego_lane, const Lanes& lanes);
 
-// The slots of `play`'s roles when the ego, in `ego_lane`, reaches trigger point 2 at
-// `ego_speed_mps`. Forward means the ego's direction.
-std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int ego_lane, double ego_speed_mps,
+// When and where the actors are aimed at: the ego at `ego_s_m` with `ego_speed_mps`, `time_s`
+// from now, which is `past_start_s` after the start (the handover). Until the last seconds before
+// the start that is the ego at trigger point 2 at the estimated start; closer to it, and while
+// the handover waits beyond trigger point 2, a short horizon ahead (aim_of), so that the actors
+// keep closing on their places instead of holding a plan that has run out of time.
+struct Aim {
+  double time_s = 0.0;
+  double ego_s_m = 0.0;
+  double ego_speed_mps = 0.0;
+  double past_start_s = 0.0;
+};
+
+// `time_to_start_s`: estimated (0 once the ego is beyond trigger point 2); `speed_at_start_mps`:
+// the ego's estimated speed there. Within `horizon_s` of the start the ego is taken to drive on at
+// its present speed.
+Aim aim_of(double time_to_start_s, double trigger2_s_m, double speed_at_start_mps, const EgoObservation& ego,
+           double horizon_s);
+
+// The slots of `play`'s roles at `aim`, the ego in `ego_lane`. A role stands `ahead_m` from the
+// ego at the start and drives on at its start speed: at a time past the start it is that much
+// further ahead or behind. Forward means the ego's direction.
+std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int ego_lane, const Aim& aim,
                            const Lanes& lanes);
 
 

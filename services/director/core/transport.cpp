@@ -80,6 +80,20 @@ std::vector<ZoneAtStart> zones_of(const PlayConfig& play, Direction ego_directio
   return out;
 }
 
+std::vector<ZoneAtStart> slot_zones(const std::vector<Slot>& slots, const std::vector<double>& lengths_m,
+                                    Direction ego_direction) {
+  std::vector<ZoneAtStart> out;
+  for (std::size_t i = 0; i < slots.size(); ++i) {
+    const Slot& slot = slots[i];
+    if (slot.direction != ego_direction) continue;
+    const double half = 0.5 * lengths_m[i];
+    const double a = slot.s_m - sign(slot.direction) * (half + kSlotGapBehind_m);
+    const double b = slot.s_m + sign(slot.direction) * (half + kSlotMinGap_m + kSlotTimeGap_s * slot.speed_mps);
+    out.push_back({slot.direction, slot.lane, std::min(a, b), std::max(a, b)});
+  }
+  return out;
+}
+
 bool in_zone(const ZoneAtStart& z, int lane, double s_m, double length_m) {
   return lane == z.lane && s_m + 0.5 * length_m > z.from_s_m && s_m - 0.5 * length_m < z.to_s_m;
 }
@@ -94,7 +108,8 @@ const ZoneAtStart* zone_hit(const std::vector<ZoneAtStart>& zones, const Observe
 }
 
 std::optional<Clearance> clear_out(const ObservedVehicle& v, const std::vector<ZoneAtStart>& zones, double time_left_s,
-                                   const std::vector<int>& role_lanes, const Lanes& lanes, const DirectorConfig& cfg) {
+                                   const EgoObservation& ego, double ego_s_then_m, const std::vector<int>& role_lanes,
+                                   const Lanes& lanes, const DirectorConfig& cfg) {
   const double t = std::max(time_left_s, 0.0);
   const double s_then = v.s_m + sign(v.direction) * v.speed_mps * t;
   const ZoneAtStart* hit = zone_hit(zones, v, s_then);
@@ -108,7 +123,7 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const std::vector<Z
     return std::find(role_lanes.begin(), role_lanes.end(), lane) == role_lanes.end();
   };
   for (int lane : {v.lane - 1, v.lane + 1}) {  // the right one first
-    if (free_lane(lane)) return Clearance{v.speed_mps, lane};
+    if (free_lane(lane)) return Clearance{kOwnDesiredSpeed_mps, lane};
   }
   // On one lane a vehicle can only get out of a zone ahead of the ego by passing what is ahead of
   // it, or fall behind the ego by being passed: it is left to its own driving (it overtakes a
@@ -119,13 +134,24 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const std::vector<Z
   const double front_p = dir > 0 ? hit->to_s_m : -hit->from_s_m;
   const double rear_p = dir > 0 ? hit->from_s_m : -hit->to_s_m;
   const double p = dir * v.s_m;
-  const double ahead = (front_p + 0.5 * v.length_m + kZoneMargin_m - p) / t;
-  const double behind = (rear_p - 0.5 * v.length_m - kZoneMargin_m - p) / t;
+  const double ahead_p = front_p + 0.5 * v.length_m + kZoneMargin_m;
+  const double behind_p = rear_p - 0.5 * v.length_m - kZoneMargin_m;
   const double low = std::max(0.0, std::max(cfg.min_speed_mps, v.speed_mps - cfg.max_speed_offset_mps));
   const double high = v.speed_mps + cfg.max_speed_offset_mps;
+  // In the ego's lane it cannot get past the ego, nor the ego past it: a vehicle ahead of the ego
+  // stays ahead (asked to fall back behind a zone in front of the ego, it would hold the ego up,
+  // and the zone, which moves with the ego, with it).
+  const bool with_ego = occupies(ego, v.direction, v.lane);
+  const double ego_then_p = dir * ego_s_then_m;
+  const double room_p = 0.5 * (v.length_m + ego.length_m) + kZoneMargin_m;
+  auto keeps_order = [&](double target_p) {
+    if (!with_ego) return true;
+    return dir * v.s_m > dir * ego.s_m ? target_p > ego_then_p + room_p : target_p < ego_then_p - room_p;
+  };
   std::optional<Clearance> best;
-  for (double speed : {ahead, behind}) {
-    if (speed < low || speed > high) continue;
+  for (double target_p : {ahead_p, behind_p}) {
+    const double speed = (target_p - p) / t;
+    if (speed < low || speed > high || !keeps_order(target_p)) continue;
     if (!best || std::abs(speed - v.speed_mps) < std::abs(best->speed_mps - v.speed_mps)) best = Clearance{speed, v.lane};
   }
   return best;

@@ -54,6 +54,17 @@ struct ZoneAtStart {
 std::vector<ZoneAtStart> zones_of(const PlayConfig& play, Direction ego_direction, int ego_lane, double ego_s_m,
                                   const Lanes& lanes);
 
+// The room each actor of the ego's direction needs at its start, besides the play's own zones:
+// its length, kSlotGapBehind_m behind it and a safe headway ahead (kSlotMinGap_m plus
+// kSlotTimeGap_s at the slot's speed). A vehicle there keeps an actor that must change into the
+// lane from getting in (and would stand between it and the ego). Cleared, not checked at the
+// handover. `lengths_m[i]`: the length of slot i's actor.
+inline constexpr double kSlotGapBehind_m = 2.0;
+inline constexpr double kSlotMinGap_m = 5.0;
+inline constexpr double kSlotTimeGap_s = 1.0;
+std::vector<ZoneAtStart> slot_zones(const std::vector<Slot>& slots, const std::vector<double>& lengths_m,
+                                    Direction ego_direction);
+
 // Does a vehicle of length `length_m` with its centre at `s_m` in `lane` overlap a zone?
 bool in_zone(const ZoneAtStart& z, int lane, double s_m, double length_m);
 // The first zone `v` overlaps with its centre at `s_m` (in either lane it occupies), or nullptr.
@@ -61,10 +72,12 @@ const ZoneAtStart* zone_hit(const std::vector<ZoneAtStart>& zones, const Observe
 
 // What a vehicle that would stand in a zone at the start is asked to do, if anything can help.
 struct Clearance {
-  double speed_mps = 0.0;
+  double speed_mps = 0.0;  // desired speed (kOwnDesiredSpeed_mps: its own, when it only changes lane)
   int lane = -1;
 };
+// `ego_s_then_m`: where the ego is at the time the zones are for (`time_left_s` from now).
 std::optional<Clearance> clear_out(const ObservedVehicle& v, const std::vector<ZoneAtStart>& zones, double time_left_s,
-                                   const std::vector<int>& role_lanes, const Lanes& lanes, const DirectorConfig& cfg);
+                                   const EgoObservation& ego, double ego_s_then_m, const std::vector<int>& role_lanes,
+                                   const Lanes& lanes, const DirectorConfig& cfg);
 
 }  // namespace entourage::director
