@@ -203,7 +203,7 @@ TEST(Transport, AnActorTrackingItsCommandReachesTheSlotWithinAMetreAndTheSlotSpe
   double cmd = -1.0;
   double max_accel = 0.0;
   for (double t_left = 40.0; t_left > 0.0; t_left -= dt) {
-    const TransportCommand c = transport(slot, actor, t_left, cmd, dt, {}, ego, Lanes{2, 0}, cfg, cfg.transport_rate_mps2);
+    const TransportCommand c = transport(slot, actor, t_left, cmd, dt, {}, ego, Lanes{2, 0}, cfg, cfg.transport_rate_mps2, 0.0);
     cmd = c.speed_mps;
     // A driver reaching its desired speed with a 2 s lag, at most 1.5 m/s^2.
     const double a = std::clamp((cmd - actor.speed_mps) / 2.0, -1.5, 1.5);
@@ -216,8 +216,24 @@ TEST(Transport, AnActorTrackingItsCommandReachesTheSlotWithinAMetreAndTheSlotSpe
   EXPECT_LE(max_accel, 1.0 + 1e-9);
   // Too far ahead and too fast to make it: the plan says by how much it will miss.
   const TransportCommand miss =
-      transport(slot, vehicle(2, 2300.0, 30.0), 40.0, -1.0, dt, {}, ego, Lanes{2, 0}, cfg, cfg.transport_rate_mps2);
+      transport(slot, vehicle(2, 2300.0, 30.0), 40.0, -1.0, dt, {}, ego, Lanes{2, 0}, cfg, cfg.transport_rate_mps2, 0.0);
   EXPECT_LT(miss.position_error_m, -20.0);
+}
+
+TEST(Transport, AnActorToSpeedUpIsGivenTheDesiredSpeedAtWhichItsFreeRoadAccelerationIsThePlansRate) {
+  // IDM's free road: a (1 - (v / v0)^4); with v0 the drive speed, that is the plan's rate.
+  const double a = 1.4;
+  const double rate = 0.7;
+  const double v = 25.0;
+  const double drive = drive_speed_mps(27.0, v, rate, a);
+  EXPECT_NEAR(a * (1.0 - std::pow(v / drive, 4.0)), rate, 1e-9);
+  EXPECT_GT(drive, 27.0);
+  // At or above the speed it should drive at, or with an unknown type: that speed itself.
+  EXPECT_DOUBLE_EQ(drive_speed_mps(25.0, 25.0, rate, a), 25.0);
+  EXPECT_DOUBLE_EQ(drive_speed_mps(24.0, 25.0, rate, a), 24.0);
+  EXPECT_DOUBLE_EQ(drive_speed_mps(27.0, v, rate, 0.0), 27.0);
+  // Close below it the plain speed is already enough: never less than it.
+  EXPECT_DOUBLE_EQ(drive_speed_mps(40.0, v, rate, a), 40.0);
 }
 
 TEST(Transport, AVehicleThatWouldStandInAClearZoneIsSentToTheNextLaneOrOutOfTheZone) {

@@ -291,9 +291,10 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
     if (role.actor == kNoVehicle) continue;
     const ObservedVehicle* v = find(in, role.actor);
     if (v == nullptr) continue;  // a created vehicle not seen yet
-    const double rate = transport_rate_mps2(setting_.director, accel_of(setting_.type_accel_mps2, v->type_index));
+    const double type_accel = accel_of(setting_.type_accel_mps2, v->type_index);
+    const double rate = transport_rate_mps2(setting_.director, type_accel);
     const TransportCommand t = transport(slots[r], *v, aim_time_s, role.command_mps, in.dt_s, in.world, in.ego,
-                                         setting_.lanes, setting_.director, rate);
+                                         setting_.lanes, setting_.director, rate, type_accel);
     role.command_mps = t.speed_mps;
     role.position_error_m = t.position_error_m;
     role.speed_error_mps = t.speed_error_mps;
@@ -304,7 +305,7 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
     } else if (role.hopeless_since_s < 0.0) {
       role.hopeless_since_s = in.ego.time_s;
     }
-    command(role.actor, transported(t.speed_mps, t.lane), in.step, out);
+    command(role.actor, transported(t.drive_mps, t.lane), in.step, out);
   }
 }
 

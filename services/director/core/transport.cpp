@@ -44,9 +44,15 @@ bool held_up(const Slot& slot, const ObservedVehicle& actor, double cmd_mps, dou
 }
 }  // namespace
 
+double drive_speed_mps(double speed_mps, double actor_speed_mps, double rate_mps2, double type_accel_mps2) {
+  if (type_accel_mps2 <= 0.0 || speed_mps <= actor_speed_mps) return speed_mps;
+  const double share = std::min(rate_mps2 / type_accel_mps2, kMaxDriveShare);
+  return std::max(speed_mps, actor_speed_mps / std::pow(1.0 - share, 0.25));
+}
+
 TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, double time_left_s, double previous_cmd_mps,
                            double dt_s, const std::vector<ObservedVehicle>& world, const EgoObservation& ego,
-                           const Lanes& lanes, const DirectorConfig& cfg, double rate_mps2) {
+                           const Lanes& lanes, const DirectorConfig& cfg, double rate_mps2, double type_accel_mps2) {
   const int dir = sign(slot.direction);
   const double t = std::max(time_left_s, 0.0);
   const SpeedPlan plan =
@@ -59,6 +65,7 @@ TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, doubl
   const double from = previous_cmd_mps >= 0.0 ? previous_cmd_mps : actor.speed_mps;
   const double step = kCommandRate_mps2 * dt_s;
   c.speed_mps = std::max(0.0, std::clamp(target, from - step, from + step));
+  c.drive_mps = drive_speed_mps(c.speed_mps, actor.speed_mps, rate_mps2, type_accel_mps2);
   // Held up on the way: a neighbouring lane to get past, kept until it is past.
   c.lane = slot.lane;
   if (held_up(slot, actor, c.speed_mps, dir * slot.s_m, world, ego)) {

@@ -31,17 +31,27 @@ namespace entourage::director {
 inline constexpr double kCommandRate_mps2 = 1.0;
 
 struct TransportCommand {
-  double speed_mps = 0.0;     // desired speed for the actor
+  double speed_mps = 0.0;     // the speed the actor should drive at now (rate-limited plan)
+  double drive_mps = 0.0;     // the desired speed given to its driver model for that (drive_speed_mps)
   int lane = -1;              // lane to reach
   double position_error_m = 0.0;  // where the plan brings it at the start: > 0 behind the slot
   double speed_error_mps = 0.0;   // actor's speed - the slot's speed
 };
 
-// `previous_cmd_mps`: the desired speed given at the previous step (< 0: none yet).
-// `rate_mps2`: the planning rate (transport_rate_mps2 for the actor's type).
+// A driver model approaches its desired speed ever more slowly (IDM's free road: a (1 - (v/v0)^4)),
+// so an actor given the speed it should reach would lag its plan more and more. To speed up at
+// `rate_mps2` it is given the desired speed at which its free-road acceleration is that rate,
+// (v / (1 - rate/a)^(1/4), `a` its type's mean acceleration, the share capped at
+// kMaxDriveShare), never below `speed_mps`; at or above it, `speed_mps` itself.
+inline constexpr double kMaxDriveShare = 0.8;
+double drive_speed_mps(double speed_mps, double actor_speed_mps, double rate_mps2, double type_accel_mps2);
+
+// `previous_cmd_mps`: the speed of the previous step's command (< 0: none yet).
+// `rate_mps2`: the planning rate (transport_rate_mps2 for the actor's type); `type_accel_mps2`:
+// the type's mean acceleration (0: unknown, no lead on the desired speed).
 TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, double time_left_s, double previous_cmd_mps,
                            double dt_s, const std::vector<ObservedVehicle>& world, const EgoObservation& ego,
-                           const Lanes& lanes, const DirectorConfig& cfg, double rate_mps2);
+                           const Lanes& lanes, const DirectorConfig& cfg, double rate_mps2, double type_accel_mps2);
 
 // A zone at the handover, in road s, in one lane of the ego's direction, with the ego at
 // `ego_s_m` (trigger point 2 while preparing; where it is at the handover).
