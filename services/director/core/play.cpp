@@ -78,6 +78,10 @@ const ObservedVehicle* PlayRun::find(const PlayInput& in, VehicleId id) const {
   return it != in.world.end() && it->id == id ? &*it : nullptr;
 }
 
+bool PlayRun::is_cleared(VehicleId id) const {
+  return std::find(cleared_.begin(), cleared_.end(), id) != cleared_.end();
+}
+
 bool PlayRun::open(const Role& r, const PlayInput& in) const {
   return r.actor == kNoVehicle || (r.hopeless_since_s >= 0.0 && in.ego.time_s - r.hopeless_since_s >= kHopelessFor_s);
 }
@@ -135,6 +139,7 @@ PlayOutput PlayRun::step(const PlayInput& in) {
   const double x = ego_progress(in.ego);
   const int dir = sign(in.ego.direction);
   const PlayPhase before = phase_;
+  std::string waiting_for;  // beyond trigger point 2: what the start condition still lacks
   if (phase_ == PlayPhase::kWaiting && x >= dir * play_.trigger1_s_m && x < dir * play_.trigger2_s_m) {
     // Preparing starts with the first estimate; casting at the next step.
     phase_ = PlayPhase::kPreparing;
@@ -163,7 +168,7 @@ PlayOutput PlayRun::step(const PlayInput& in) {
           hand_over(in, problems, out);
           return out;
         }
-        waiting_for_ = problems;
+        waiting_for = problems;
       }
       prepare(in, out);
       break;
@@ -184,7 +189,7 @@ PlayOutput PlayRun::step(const PlayInput& in) {
                             in.ego.time_s - last_progress_report_s_ >= kProgressReportInterval_s - 1e-9;
   if (first_report_ || before != phase_ || estimate_moved || progress_due) {
     if (progress_due) last_progress_report_s_ = in.ego.time_s;
-    report(in, out, waiting_for_.empty() ? "" : "beyond trigger point 2, waiting: " + waiting_for_);
+    report(in, out, waiting_for.empty() ? "" : "beyond trigger point 2, waiting: " + waiting_for);
   }
   first_report_ = false;
   return out;
@@ -245,7 +250,7 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
   // cannot get into its lane may be the better actor).
   std::vector<bool> castable = in.available;
   for (std::size_t i = 0; i < in.world.size(); ++i) {
-    if (std::find(cleared_.begin(), cleared_.end(), in.world[i].id) != cleared_.end()) castable[i] = true;
+    if (is_cleared(in.world[i].id)) castable[i] = true;
   }
   const std::vector<int> chosen = cast_roles(sub_slots, sub_roles, castable, at, setting_.director);
   const WindowBounds window = WindowBounds::around(in.ego.s_m, setting_.window);
@@ -326,7 +331,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   }
   for (std::size_t i = 0; i < in.world.size(); ++i) {
     const ObservedVehicle& v = in.world[i];
-    const bool ours = std::find(cleared_.begin(), cleared_.end(), v.id) != cleared_.end();
+    const bool ours = is_cleared(v.id);
     if (!ours && !in.available[i]) continue;  // an actor (ours or another play's)
     const auto c =
         clear_out(v, to_clear, aim.time_s, in.ego, aim.ego_s_m, role_lanes, setting_.lanes, setting_.director);
@@ -342,7 +347,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   // none changes into it at the last moment.
   for (std::size_t i = 0; i < in.world.size(); ++i) {
     const ObservedVehicle& v = in.world[i];
-    const bool ours = std::find(cleared_.begin(), cleared_.end(), v.id) != cleared_.end();
+    const bool ours = is_cleared(v.id);
     if (ours || !in.available[i] || v.lane != v.target_lane) continue;
     const double s_then = v.s_m + sign(v.direction) * v.speed_mps * aim.time_s;
     const bool beside = std::any_of(zones.begin(), zones.end(), [&](const ZoneAtStart& z) {

@@ -138,6 +138,7 @@ class PlayRun {
   // (the ego changed lane, traffic held it up): it is replaced if a better one is found.
   bool open(const Role& r, const PlayInput& in) const;
   const ObservedVehicle* find(const PlayInput& in, VehicleId id) const;
+  bool is_cleared(VehicleId id) const;  // asked by this play to leave a zone or keep its lane
   void report(const PlayInput& in, PlayOutput& out, std::string detail);
   double ego_progress(const EgoObservation& ego) const { return sign(ego.direction) * ego.s_m; }
 
@@ -155,7 +156,6 @@ class PlayRun {
   double reported_estimate_s_ = -1.0;
   double handover_time_s_ = -1.0;
   double trigger2_time_s_ = -1.0;  // when the ego passed trigger point 2 (< 0: not yet)
-  std::string waiting_for_;        // beyond trigger point 2: what the start condition still lacks
   double release_until_s_ = -1.0;
   double last_cast_attempt_s_ = -1e9;
   double last_progress_report_s_ = -1e9;
