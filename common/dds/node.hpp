@@ -40,13 +40,10 @@ class Writer {
   Writer() = default;
   explicit Writer(fdds::DataWriter* w) : writer_(w) {}
 
-  // Publishes a sample; false if Fast DDS refused it (e.g. resources exhausted).
+  // Publishes a sample; false if Fast DDS refused it (e.g. resources exhausted). There is no
+  // unregister: in Fast DDS 2.9 it can make a reliable writer drop another sample unsent (see
+  // RegionPublisher::publish).
   bool write(const Sample& s) const { return writer_->write(const_cast<Sample*>(&s)); }
-  // Releases the writer's instance of a keyed sample without disposing it: the vehicle lives on
-  // under another owner.
-  void unregister(const Sample& s) const {
-    writer_->unregister_instance(const_cast<Sample*>(&s), fdds::HANDLE_NIL);
-  }
   bool valid() const { return writer_ != nullptr; }
 
  private:
