@@ -14,25 +14,27 @@ constexpr const char* kParticipantProfile = "entourage_participant";
 constexpr const char* kDropEnv = "ENTOURAGE_FAULT_DROP_PERCENT";
 constexpr std::uint32_t kLossyHeartbeat_ns = 100000000;
 
+std::string profile_of(Topic t, const char* side) { return std::string(info(t).profile) + "_" + side; }
+}  // namespace
+
 // Fault injection: ENTOURAGE_FAULT_DROP_PERCENT=N (1-100) makes this process's participant send
 // over UDP only, dropping N % of its outgoing data messages (RTPS DATA and DATA_FRAG; discovery
 // is not dropped), and turns data sharing off, so that reliability has to repair every loss.
 // 0 or unset: the normal transports.
-int drop_percent() {
+Faults Faults::from_environment() {
+  Faults f;
   const char* v = std::getenv(kDropEnv);
-  if (v == nullptr || *v == '\0') return 0;
+  if (v == nullptr || *v == '\0') return f;
   char* end = nullptr;
   const long n = std::strtol(v, &end, 10);
   if (*end != '\0' || n < 0 || n > 100) {
     throw DdsError(std::string(kDropEnv) + " must be a whole number from 0 to 100 (got \"" + v + "\")");
   }
-  return static_cast<int>(n);
+  f.drop_percent = static_cast<int>(n);
+  return f;
 }
 
-std::string profile_of(Topic t, const char* side) { return std::string(info(t).profile) + "_" + side; }
-}  // namespace
-
-Node::Node(int domain, const std::string& qos_file, const std::string& participant_name) {
+Node::Node(int domain, const std::string& qos_file, const std::string& participant_name, Faults faults) {
   auto* factory = fdds::DomainParticipantFactory::get_instance();
   if (factory->load_XML_profiles_file(qos_file) != ReturnCode_t::RETCODE_OK) {
     throw DdsError("cannot load the QoS profiles from " + qos_file);
@@ -42,10 +44,16 @@ Node::Node(int domain, const std::string& qos_file, const std::string& participa
     throw DdsError(std::string("the QoS file ") + qos_file + " has no participant profile " + kParticipantProfile);
   }
   qos.name(participant_name);
-  drop_percent_ = drop_percent();
-  if (drop_percent_ > 0) {
+  faulty_ = faults.any();
+  if (faulty_) {
     auto lossy = std::make_shared<eprosima::fastdds::rtps::test_UDPv4TransportDescriptor>();
-    lossy->dropDataMessagesPercentage = static_cast<std::uint8_t>(drop_percent_);
+    lossy->dropDataMessagesPercentage = static_cast<std::uint8_t>(faults.drop_percent);
+    if (faults.drop_message) {
+      using eprosima::fastrtps::rtps::CDRMessage_t;
+      lossy->drop_data_messages_filter_ = [drop = std::move(faults.drop_message)](CDRMessage_t& m) {
+        return drop(m.buffer, m.length);
+      };
+    }
     qos.transport().user_transports.push_back(lossy);
     qos.transport().use_builtin_transports = false;
   }
@@ -76,7 +84,7 @@ fdds::DataWriter* Node::create_writer(Topic t, fdds::Topic* topic) {
   }
   // Not settable from XML in Fast DDS 2.9: a vehicle handed to another owner must not be disposed.
   qos.writer_data_lifecycle().autodispose_unregistered_instances = false;
-  if (drop_percent_ > 0) {
+  if (faulty_) {
     qos.data_sharing().off();
     // A loss is noticed at the next heartbeat: 0.1 s instead of the default 3 s, so that a lockstep
     // step waits a fraction of a second for a repair. (Not by default: it halves the lockstep
@@ -94,7 +102,7 @@ void Node::create_reader(Topic t, fdds::Topic* topic, fdds::DataReaderListener* 
   if (subscriber_->get_datareader_qos_from_profile(profile_of(t, "reader"), qos) != ReturnCode_t::RETCODE_OK) {
     throw DdsError("no QoS profile " + profile_of(t, "reader"));
   }
-  if (drop_percent_ > 0) qos.data_sharing().off();
+  if (faulty_) qos.data_sharing().off();
   fdds::DataReader* r = subscriber_->create_datareader(topic, qos, listener, fdds::StatusMask::data_available());
   if (r == nullptr) throw DdsError("cannot create a reader for " + std::string(info(t).name));
   readers_[t] = r;

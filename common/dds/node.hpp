@@ -3,6 +3,8 @@
 // profile file, with typed writers and readers for Entourage's topics. Reader callbacks run on
 // Fast DDS's threads; a shell hands the samples to its main thread (see inbox.hpp).
 
+#include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -38,23 +40,36 @@ class Writer {
   Writer() = default;
   explicit Writer(fdds::DataWriter* w) : writer_(w) {}
 
-  // Publishes a sample; false if Fast DDS refused it (e.g. resources exhausted).
+  // Publishes a sample; false if Fast DDS refused it (e.g. resources exhausted). There is no
+  // unregister: in Fast DDS 2.9 it can make a reliable writer drop another sample unsent (see
+  // RegionPublisher::publish).
   bool write(const Sample& s) const { return writer_->write(const_cast<Sample*>(&s)); }
-  // Releases the writer's instance of a keyed sample without disposing it: the vehicle lives on
-  // under another owner.
-  void unregister(const Sample& s) const {
-    writer_->unregister_instance(const_cast<Sample*>(&s), fdds::HANDLE_NIL);
-  }
   bool valid() const { return writer_ != nullptr; }
 
  private:
   fdds::DataWriter* writer_ = nullptr;
 };
 
+// Faults a participant injects into what it sends. Any fault makes it send over UDP only, without
+// data sharing, and its writers heartbeat every 0.1 s, so that reliability has to repair each loss
+// and does so within a lockstep step (node.cpp).
+struct Faults {
+  // A share (0-100 %) of the RTPS messages carrying user data (DATA, DATA_FRAG; not discovery).
+  int drop_percent = 0;
+  // Tests: drops each outgoing RTPS message carrying user data (DATA) for which it returns true;
+  // it sees the whole message, header included.
+  std::function<bool(const std::uint8_t* message, std::size_t size)> drop_message;
+
+  bool any() const { return drop_percent > 0 || drop_message != nullptr; }
+  // From ENTOURAGE_FAULT_DROP_PERCENT=N (a whole number 0-100; unset or empty: 0). Throws DdsError.
+  static Faults from_environment();
+};
+
 class Node {
  public:
   // Loads the QoS profiles and joins `domain`. Throws DdsError with a clear message on failure.
-  Node(int domain, const std::string& qos_file, const std::string& participant_name);
+  Node(int domain, const std::string& qos_file, const std::string& participant_name,
+       Faults faults = Faults::from_environment());
   ~Node();
   Node(const Node&) = delete;
   Node& operator=(const Node&) = delete;
@@ -105,7 +120,7 @@ class Node {
   fdds::DataWriter* create_writer(Topic t, fdds::Topic* topic);
   void create_reader(Topic t, fdds::Topic* topic, fdds::DataReaderListener* listener);
 
-  int drop_percent_ = 0;  // fault injection (ENTOURAGE_FAULT_DROP_PERCENT), see node.cpp
+  bool faulty_ = false;  // faults injected (Faults::any()), see node.cpp
   fdds::DomainParticipant* participant_ = nullptr;
   fdds::Publisher* publisher_ = nullptr;
   fdds::Subscriber* subscriber_ = nullptr;

@@ -3,8 +3,6 @@
 // The core is anything with `StepOutput step(const StepInput&)`, `fleet()` and `counters()`.
 
 #include <algorithm>
-#include <deque>
-#include <utility>
 #include <vector>
 
 #include "entourage_msg/EgoStatePubSubTypes.h"
@@ -63,25 +61,24 @@ class RegionPublisher {
   TopicCounts publish(Step k, double time_s, const StepOutput& out) {
     TopicCounts written{};
     own_.clear();
-    // Instances of vehicles handed on are released two steps later: step k begins once every peer
-    // has finished step k-1, for which it needed every state of step k-2, so a lost last state has
-    // been repaired by then (releasing at once lets the writer drop it from its history unsent).
-    while (!leaving_.empty() && leaving_.front().first + kReleaseAfterSteps <= k) {
-      states_.unregister(leaving_.front().second);
-      leaving_.pop_front();
-    }
     for (const VehicleReport& r : out.states) {
       const msg::VehicleState m = to_msg(r, self_, k, time_s, road_);
       states_.write(m);
       own_.push_back(from_msg(m));
       ++written[static_cast<std::size_t>(Topic::kVehicleState)];
     }
+    // A vehicle handed on keeps its state instance in this writer: it is never unregistered. In
+    // Fast DDS 2.9 a reader's acknowledgement that covers an unregister together with an older
+    // sample of the same instance makes the writer also drop, unsent, the first sample that reader
+    // has not acknowledged yet (StatefulWriter::check_acked_status walks the history with an
+    // iterator that DataWriterHistory::remove_instance_changes shifts): a reader that lost that
+    // sample gets a GAP instead and lockstep waits for it forever. No delay of the release avoids
+    // that (acknowledgements lag arbitrarily behind delivery), and 2.9 has no safe per-instance
+    // acknowledgement check, so the writer keeps a small record per vehicle this region ever owned.
+    // tests/unit/lossy_handoff_test.cpp loses exactly that sample.
     for (const Handoff& h : out.handoffs) {
       handoffs_.write(to_msg(h, time_s, road_));
       ++written[static_cast<std::size_t>(Topic::kHandoff)];
-      msg::VehicleState key;  // the vehicle leaves this owner: release its instance later
-      key.id(h.vehicle.id);
-      if (h.from == self_) leaving_.emplace_back(k, key);
     }
     return written;
   }
@@ -94,8 +91,6 @@ class RegionPublisher {
   Writer<msg::VehicleStatePubSubType> states_;
   Writer<msg::HandoffPubSubType> handoffs_;
   std::vector<ObservedVehicle> own_;
-  static constexpr Step kReleaseAfterSteps = 2;
-  std::deque<std::pair<Step, msg::VehicleState>> leaving_;  // (step handed on, key)
 };
 
 template <class Core>
