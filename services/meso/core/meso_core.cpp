@@ -63,11 +63,21 @@ void start_lane_change(Vehicle& v, int lane) {
   lc.phase_elapsed_s = 0.0;
   lc.duration_s = v.driver.lane_change_duration_s;
 }
+
+// Back to the lane it was leaving (it has hardly moved sideways); the interval before its next
+// change starts again.
+void call_off_lane_change(Vehicle& v) {
+  LaneChangeState& lc = v.lane_change;
+  lc.phase = LaneChangePhase::kNone;
+  lc.from_lane = lc.to_lane = v.lane;
+  lc.phase_elapsed_s = 0.0;
+  lc.since_last_change_s = 0.0;
+}
 }  // namespace
 
-Ahead MesoCore::ahead_of(const Vehicle& v) const {
+Ahead MesoCore::ahead_of(const Vehicle& v, bool own_lane_only) const {
   Ahead out;
-  if (const Occupant* leader = nearest_leader(v, index_)) {
+  if (const Occupant* leader = own_lane_only ? leader_of(v, index_, v.lane) : nearest_leader(v, index_)) {
     out = {std::max(0.0, gap_between(*leader, v.progress_m(), v.length_m)), leader->speed_mps};
   }
   // A vehicle of the other direction in its lane (an overtaker that has not returned yet) is taken
@@ -96,11 +106,13 @@ void MesoCore::move() {
   struct Next {
     double speed_mps;
     std::optional<int> lane;
+    bool call_off;
   };
   std::vector<Next> next;
   next.reserve(fleet_.size());
   for (const Vehicle& v : fleet_.vehicles()) {
-    const Ahead ahead = ahead_of(v);
+    const bool call_off = calls_off_change(v, index_, lane_rules_);
+    const Ahead ahead = ahead_of(v, call_off);
     const double desired = actor_desired_speed_mps(
         v, env_.speeds().desired_speed_mps(v.direction, v.s_m, v.driver.desired_speed_mps(), v.driver.basic_median_mps()));
     const MesoSpeed ms = next_speed(v, equilibrium_of(v), ahead, desired, dt, model_);
@@ -109,7 +121,7 @@ void MesoCore::move() {
     const bool may_change = must >= 0 || chooses_lanes_freely(v);  // actors only where the director asks
     const std::optional<int> lane = may_change ? choose_lane(v, index_, ahead.gap_m, lane_rules_, must) : std::nullopt;
     if (lane && must >= 0) ++counters_.mandatory_lane_changes;
-    next.push_back({ms.speed_mps, lane});
+    next.push_back({ms.speed_mps, lane, call_off});
   }
   auto& vehicles = fleet_.vehicles();
   for (std::size_t i = 0; i < vehicles.size(); ++i) {
@@ -117,6 +129,10 @@ void MesoCore::move() {
     v.accel_mps2 = (next[i].speed_mps - v.speed_mps) / dt;
     v.speed_mps = next[i].speed_mps;
     v.s_m += sign(v.direction) * v.speed_mps * dt;
+    if (next[i].call_off) {
+      call_off_lane_change(v);
+      ++counters_.called_off_lane_changes;
+    }
     continue_lane_change(v, dt);
     if (next[i].lane) start_lane_change(v, *next[i].lane);
   }

@@ -38,6 +38,7 @@ struct Counters {
   std::uint64_t commands_applied = 0;  // director commands to vehicles owned here
   std::uint64_t emergency_stops = 0;  // vehicle-steps where the floor-gap guard overrode braking
   std::uint64_t mandatory_lane_changes = 0;
+  std::uint64_t called_off_lane_changes = 0;  // changes just begun whose target lane filled up (meso_lanes.hpp)
 };
 
 // The outer regions served by a meso instance (kMesoBoth, kMesoFront or kMesoRear).
@@ -61,7 +62,8 @@ class MesoCore {
   void perceive(const StepInput& in);
   void move();
   // The nearer leader of the lanes it occupies, or the start of a closure of its lane.
-  Ahead ahead_of(const Vehicle& v) const;
+  // The nearest obstacle ahead; `own_lane_only`: not in the lane it is changing to (a change called off).
+  Ahead ahead_of(const Vehicle& v, bool own_lane_only) const;
   const EquilibriumSpeed& equilibrium_of(const Vehicle& v);
   StepOutput hand_off(const StepInput& in);
   bool serves(Region r) const;

@@ -55,4 +55,13 @@ std::optional<int> choose_lane(const Vehicle& v, const LaneIndex& index, double 
   return std::nullopt;
 }
 
+bool calls_off_change(const Vehicle& v, const LaneIndex& index, const LaneRules& rules) {
+  const LaneChangeState& lc = v.lane_change;
+  if (!lc.moving() || lc.lateral_fraction() > rules.call_off_fraction) return false;
+  const int lanes = index.lanes(v.direction);
+  if (lc.to_lane < 0 || lc.to_lane >= lanes || v.lane >= lanes) return false;  // an overtaking: micro's manoeuvre
+  const Occupant* leader_there = nullptr;
+  return !has_room(v, index, lc.to_lane, 1.0, &leader_there);
+}
+
 }  // namespace entourage::meso

@@ -12,6 +12,13 @@
 //   must     its lane is closed ahead (or a play asks for another lane): towards `must_target` as
 //            soon as the lane there has room ahead and behind
 //
+//   call off a change just begun whose target lane has no room any more: the vehicle decided on
+//            the world of the step before, and in that same step another service placed a vehicle
+//            there (a birth at the window's edge) or another vehicle changed into it. Only while
+//            it has moved less than `call_off_fraction` of a lane sideways, so that going back is
+//            invisible; beyond that it completes the change (micro's drivers signal first and
+//            check again before moving, which closes the same race)
+//
 // A change then takes the driver's lane-change duration with the same lateral profile as in the
 // inner region (the vehicle is in both lanes meanwhile), so a vehicle handed to micro mid-change
 // continues it seamlessly.
@@ -27,11 +34,15 @@ struct LaneRules {
   double blocked_speed_loss_mps = 2.0;  // how much slower than desired counts as blocked
   double min_interval_s = 5.0;          // between the end of one change and the next
   double keep_right_gap_factor = 2.0;   // room wanted ahead in the right lane, in safe gaps
+  double call_off_fraction = 0.02;      // a change is called off only before this share of the lateral move
 };
 
 // The lane `v` should start changing to now, if any. `must_target` (>= 0) is a lane it must move
 // towards (traffic/lane_changes.hpp, mandatory_target_lane); -1 for none.
 std::optional<int> choose_lane(const Vehicle& v, const LaneIndex& index, double gap_ahead_m, const LaneRules& rules,
                                int must_target = -1);
+
+// Whether `v` calls off the lane change it has just begun (see "call off" above).
+bool calls_off_change(const Vehicle& v, const LaneIndex& index, const LaneRules& rules);
 
 }  // namespace entourage::meso
