@@ -83,6 +83,8 @@ fdds::DataWriter* Node::create_writer(Topic t, fdds::Topic* topic) {
     throw DdsError("no QoS profile " + profile_of(t, "writer"));
   }
   // Not settable from XML in Fast DDS 2.9: a vehicle handed to another owner must not be disposed.
+  // (Regions no longer unregister handed-on vehicles at all, region_shell.hpp; kept so that no
+  // future unregister disposes one.)
   qos.writer_data_lifecycle().autodispose_unregistered_instances = false;
   if (faulty_) {
     qos.data_sharing().off();

@@ -3,7 +3,10 @@
 // The core is anything with `StepOutput step(const StepInput&)`, `fleet()` and `counters()`.
 
 #include <algorithm>
+#include <cstdint>
 #include <vector>
+
+#include <spdlog/spdlog.h>
 
 #include "entourage_msg/EgoStatePubSubTypes.h"
 #include "entourage_msg/HandoffPubSubTypes.h"
@@ -49,12 +52,16 @@ inline StepInput gather_inputs(Step k, Inbox& inbox, const std::vector<ObservedV
 }
 
 // Publishes a step's vehicle states and handoffs; returns the counts and remembers the states
-// as this service's part of the world for the next step.
+// as this service's part of the world for the next step. A state its peers would refuse (convert.hpp,
+// `check`) is still published, and logged as an error here: refused, the vehicle would be missing
+// from their world without a word at its source (a meso vehicle braking at 39 m/s² once became
+// invisible to the generator, which placed the next vehicle on top of it).
 class RegionPublisher {
  public:
-  RegionPublisher(Node& node, ServiceId self, const Road& road)
+  RegionPublisher(Node& node, ServiceId self, const Road& road, const SampleLimits& limits)
       : self_(self),
         road_(road),
+        limits_(limits),
         states_(node.writer<msg::VehicleStatePubSubType>(Topic::kVehicleState)),
         handoffs_(node.writer<msg::HandoffPubSubType>(Topic::kHandoff)) {}
 
@@ -63,6 +70,11 @@ class RegionPublisher {
     own_.clear();
     for (const VehicleReport& r : out.states) {
       const msg::VehicleState m = to_msg(r, self_, k, time_s, road_);
+      if (const auto why = check(m, limits_)) {
+        ++unfit_states_;
+        spdlog::error("published the state of vehicle {} at step {} that its peers refuse: {} [{} so far]", m.id(), k,
+                      *why, unfit_states_);
+      }
       states_.write(m);
       own_.push_back(from_msg(m));
       ++written[static_cast<std::size_t>(Topic::kVehicleState)];
@@ -88,6 +100,8 @@ class RegionPublisher {
  private:
   ServiceId self_;
   const Road& road_;
+  SampleLimits limits_;
+  std::uint64_t unfit_states_ = 0;
   Writer<msg::VehicleStatePubSubType> states_;
   Writer<msg::HandoffPubSubType> handoffs_;
   std::vector<ObservedVehicle> own_;
@@ -98,7 +112,7 @@ int run_region_service(const ServiceContext& ctx, Core& core) {
   const ScenarioConfig& sc = ctx.scenario.config;
   const Road road(sc.road);
   Shell shell(ctx);
-  RegionPublisher publisher(shell.node, ctx.id, road);
+  RegionPublisher publisher(shell.node, ctx.id, road, SampleLimits::of(sc));
   if (!shell.discover(ctx)) return 1;
   run_step_loop(
       ctx, shell.inbox, shell.done, shell.status,

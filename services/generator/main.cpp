@@ -11,7 +11,7 @@ int run(const dds::ServiceContext& ctx) {
   const ScenarioConfig& sc = ctx.scenario.config;
   const Road road(sc.road);
   dds::Shell shell(ctx);
-  dds::RegionPublisher publisher(shell.node, ctx.id, road);
+  dds::RegionPublisher publisher(shell.node, ctx.id, road, dds::SampleLimits::of(sc));
   // Observing the demand's stream takes a second or two: done before reporting ready.
   generator::GeneratorCore core(sc, Random::derived(ctx.seed, static_cast<std::uint64_t>(Role::kGenerator)).next_u64());
   for (Direction d : {Direction::kForward, Direction::kBackward}) {

@@ -160,7 +160,11 @@ TEST(LossyHandoff, AStateLostTwoStepsAfterAHandoffIsRepaired) {
   Node region(kDomain, default_qos_file(), "meso", faults);
   const Road road(road_config());
   const ServiceId self{Role::kMeso, 0};
-  RegionPublisher publisher(region, self, road);
+  SampleLimits limits;
+  limits.lanes_forward = 2;
+  limits.lanes_backward = 1;
+  limits.vehicle_types = 1;
+  RegionPublisher publisher(region, self, road, limits);
   const auto deadline = std::chrono::steady_clock::now() + kDiscoveryTimeout;
   while ((region.matched_readers(Topic::kVehicleState) < 1 || peer.matched_writers(Topic::kVehicleState) < 1) &&
          std::chrono::steady_clock::now() < deadline) {
