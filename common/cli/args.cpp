@@ -1,5 +1,6 @@
 #include "cli/args.hpp"
 
+#include <iostream>
 #include <sstream>
 
 namespace entourage::cli {
@@ -77,6 +78,18 @@ bool Args::parse(int argc, char** argv, int first) {
   std::vector<std::string> args;
   for (int i = first; i < argc; ++i) args.emplace_back(argv[i]);
   return parse(args);
+}
+
+std::optional<int> Args::parse_or_exit(int argc, char** argv, int first) {
+  if (!parse(argc, argv, first)) {
+    std::cerr << program_ << ": " << error_ << "\n\n" << usage();
+    return 2;
+  }
+  if (help_) {
+    std::cout << usage();
+    return 0;
+  }
+  return std::nullopt;
 }
 
 bool Args::parse(const std::vector<std::string>& args) {

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,10 @@ class Args {
   // Parses argv[first..]. Returns false on an error (see error()); --help sets help_requested().
   bool parse(int argc, char** argv, int first = 1);
   bool parse(const std::vector<std::string>& args);
+  // parse() as a program's first step: on an error prints "PROGRAM: error" and the usage to stderr
+  // and gives 2, on --help prints the usage to stdout and gives 0 (the exit code to stop with);
+  // nullopt to go on.
+  std::optional<int> parse_or_exit(int argc, char** argv, int first = 1);
   bool help_requested() const { return help_; }
   bool was_set(const std::string& name) const;
   const std::string& error() const { return error_; }

@@ -97,14 +97,7 @@ int service_main(int argc, char** argv, ServiceId id, const std::string& summary
   args.option("discovery-timeout", "SECONDS", "give up waiting for the peers after this (default 60)",
               &opt.discovery_timeout_s);
   if (add_options) add_options(args);
-  if (!args.parse(argc, argv)) {
-    std::cerr << program << ": " << args.error() << "\n\n" << args.usage();
-    return 2;
-  }
-  if (args.help_requested()) {
-    std::cout << args.usage();
-    return 0;
-  }
+  if (const auto rc = args.parse_or_exit(argc, argv)) return *rc;
   std::string error;
   if (opt.scenario_path.empty()) error = "--scenario is required";
   if (opt.mode == "lockstep") {

@@ -342,14 +342,7 @@ int run_command(int argc, char** argv) {
               &opt.discovery_timeout_s);
   args.option("bin-dir", "DIR", "where the service executables are (default: beside entourage)", &opt.bin_dir);
   args.flag("quiet", "no progress lines", &opt.quiet);
-  if (!args.parse(argc, argv, 2)) {
-    std::cerr << "entourage run: " << args.error() << "\n\n" << args.usage();
-    return 2;
-  }
-  if (args.help_requested()) {
-    std::cout << args.usage();
-    return 0;
-  }
+  if (const auto rc = args.parse_or_exit(argc, argv, 2)) return *rc;
   if (opt.lockstep && opt.realtime) {
     std::cerr << "entourage run: --lockstep and --realtime exclude each other\n";
     return 2;

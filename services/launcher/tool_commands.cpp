@@ -16,19 +16,6 @@ namespace entourage::launcher {
 
 namespace {
 
-// Parses a subcommand's arguments; returns an exit code to stop with, or -1 to go on.
-int parse_or_exit(cli::Args& args, int argc, char** argv, const char* command) {
-  if (!args.parse(argc, argv, 2)) {
-    std::cerr << "entourage " << command << ": " << args.error() << "\n\n" << args.usage();
-    return 2;
-  }
-  if (args.help_requested()) {
-    std::cout << args.usage();
-    return 0;
-  }
-  return -1;
-}
-
 // The scenario a recording was made with (its attached text), for type names and the window;
 // `source` names the text in problems.
 std::optional<ScenarioConfig> recorded_scenario(const std::string& text, const std::string& source) {
@@ -85,7 +72,7 @@ int check_command(int argc, char** argv) {
   std::string path;
   cli::Args args("entourage check", "Validates a scenario: exits 0, or prints every problem and exits 2.");
   args.positional("SCENARIO", "scenario file", &path);
-  if (int rc = parse_or_exit(args, argc, argv, "check"); rc >= 0) return rc;
+  if (const auto rc = args.parse_or_exit(argc, argv, 2)) return *rc;
   const auto sc = scenario::load_file(path);
   if (!sc.ok()) {
     for (const auto& p : sc.problems) std::cerr << p.to_string() << "\n";
@@ -109,7 +96,7 @@ int export_command(int argc, char** argv) {
                  "run.csv and scenario.pbtxt, which entourage verify DIR reads back.");
   args.positional("RECORDING", "an MCAP recording made by entourage run", &path);
   args.option("csv", "DIR", "directory to write the CSV files to; required", &dir);
-  if (int rc = parse_or_exit(args, argc, argv, "export"); rc >= 0) return rc;
+  if (const auto rc = args.parse_or_exit(argc, argv, 2)) return *rc;
   if (dir.empty()) {
     std::cerr << "entourage export: --csv DIR is required\n";
     return 2;
@@ -135,7 +122,7 @@ int verify_command(int argc, char** argv) {
                  "invariant is violated, 2 if the input cannot be read.");
   args.positional("RECORDING", "an MCAP recording made by entourage run, or a directory written by entourage export",
                   &path);
-  if (int rc = parse_or_exit(args, argc, argv, "verify"); rc >= 0) return rc;
+  if (const auto rc = args.parse_or_exit(argc, argv, 2)) return *rc;
   const auto opened =
       std::filesystem::is_directory(path) ? open_export(path, "verify") : open_recording(path, "verify");
   if (!opened) return 2;
@@ -144,7 +131,7 @@ int verify_command(int argc, char** argv) {
 
 int models_command(int argc, char** argv) {
   cli::Args args("entourage models", "Lists the behavioural models a scenario can name.");
-  if (int rc = parse_or_exit(args, argc, argv, "models"); rc >= 0) return rc;
+  if (const auto rc = args.parse_or_exit(argc, argv, 2)) return *rc;
   for (const auto& m : all_models()) std::cout << m.kind << "  " << m.name << "  " << m.description << "\n";
   return 0;
 }

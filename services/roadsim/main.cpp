@@ -123,14 +123,7 @@ int run(int argc, char** argv) {
   args.option("seed", "N", "seed of the simulation's random stream (default 1)", &c.seed);
   args.option("csv", "FILE", "write every detector interval to FILE", &csv);
   args.flag("quiet", "no progress lines", &quiet);
-  if (!args.parse(argc, argv)) {
-    std::cerr << "entourage-roadsim: " << args.error() << "\n" << args.usage();
-    return 2;
-  }
-  if (args.help_requested()) {
-    std::cout << args.usage();
-    return 0;
-  }
+  if (const auto rc = args.parse_or_exit(argc, argv)) return *rc;
   if (scenario_path.empty()) {
     std::cerr << "entourage-roadsim: a scenario file is required\n" << args.usage();
     return 2;

@@ -132,14 +132,7 @@ int run(int argc, char** argv) {
   args.flag("verbose", "one line per run as well", &verbose);
   args.flag("trace", "every play report of every run as well (to stderr)", &trace);
   args.flag("plain", "the scenario's own ego driver in every run (only the traffic seed varies)", &plain);
-  if (!args.parse(argc, argv)) {
-    std::cerr << "entourage-bench-director: " << args.error() << "\n" << args.usage();
-    return 2;
-  }
-  if (args.help_requested()) {
-    std::cout << args.usage();
-    return 0;
-  }
+  if (const auto rc = args.parse_or_exit(argc, argv)) return *rc;
   if (runs < 1 || runs > 100000) {
     std::cerr << "entourage-bench-director: --runs wants a number from 1 to 100000\n";
     return 2;

@@ -139,14 +139,7 @@ int run(int argc, char** argv) {
               &speed_flow_point);
   args.option("gnuplot-script", "FILE", "the plot script (default tests/bench/fundamental_diagram.gp)",
               &gnuplot_script);
-  if (!args.parse(argc, argv)) {
-    std::cerr << "entourage-bench-fd: " << args.error() << "\n" << args.usage();
-    return 2;
-  }
-  if (args.help_requested()) {
-    std::cout << args.usage();
-    return 0;
-  }
+  if (const auto rc = args.parse_or_exit(argc, argv)) return *rc;
   bool ok = false;
   const std::vector<double> flows = parse_list(flows_text, &ok);
   if (!ok || flows.empty()) {

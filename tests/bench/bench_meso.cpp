@@ -356,14 +356,7 @@ int run(int argc, char** argv) {
   args.option("duration", "S", "simulated time per run (default 600)", &duration_s);
   args.option("seed", "N", "run seed (default: the scenario's)", &seed);
   args.option("repeat", "N", "timed replays of each core per run, the fastest counts (default 5)", &repeat);
-  if (!args.parse(argc, argv)) {
-    std::cerr << "entourage-bench-meso: " << args.error() << "\n" << args.usage();
-    return 2;
-  }
-  if (args.help_requested()) {
-    std::cout << args.usage();
-    return 0;
-  }
+  if (const auto rc = args.parse_or_exit(argc, argv)) return *rc;
   if (!std::isfinite(duration_s) || duration_s <= 0.0 || duration_s > 86400.0) {
     std::cerr << "entourage-bench-meso: --duration wants a simulated time in seconds, above 0 and at most 86400\n";
     return 2;

@@ -151,14 +151,7 @@ int run(int argc, char** argv) {
   args.option("duration", "S", "simulated time (default 3600)", &duration_s);
   args.option("seed", "N", "seed of Entourage's random stream (default 42, as SUMO's)", &c.seed);
   args.flag("no-sumo", "do not run SUMO", &no_sumo);
-  if (!args.parse(argc, argv)) {
-    std::cerr << "entourage-bench-sumo: " << args.error() << "\n" << args.usage();
-    return 2;
-  }
-  if (args.help_requested()) {
-    std::cout << args.usage();
-    return 0;
-  }
+  if (const auto rc = args.parse_or_exit(argc, argv)) return *rc;
   const auto loaded = scenario::load_file(scenario_path);
   if (!loaded.ok()) {
     for (const auto& p : loaded.problems) std::cerr << p.to_string() << "\n";

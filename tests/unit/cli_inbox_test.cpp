@@ -3,6 +3,10 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "cli/args.hpp"
 #include "dds/inbox.hpp"
@@ -82,6 +86,35 @@ msg::VehicleState vehicle(std::uint32_t id, std::uint64_t step, ServiceId owner)
 constexpr ServiceId kEgo{Role::kEgo, 0};
 constexpr ServiceId kMicro{Role::kMicro, 0};
 constexpr ServiceId kMeso{Role::kMeso, 0};
+
+// What every executable does first: 2 with the error on a bad argument, 0 on --help, go on otherwise.
+TEST(Args, ParseOrExitGivesTheExitCodeToStopWith) {
+  const auto run = [](std::vector<std::string> words) {
+    int n = 0;
+    cli::Args a("prog", "summary");
+    a.option("count", "N", "count", &n);
+    std::vector<char*> argv;
+    for (std::string& w : words) argv.push_back(w.data());
+    ::testing::internal::CaptureStderr();
+    ::testing::internal::CaptureStdout();
+    const std::optional<int> rc = a.parse_or_exit(static_cast<int>(argv.size()), argv.data());
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    const std::string out = ::testing::internal::GetCapturedStdout();
+    return std::make_tuple(rc, err, out);
+  };
+  const auto [bad, bad_err, bad_out] = run({"prog", "--count", "x"});
+  EXPECT_EQ(bad, std::optional<int>(2));
+  EXPECT_EQ(bad_err.rfind("prog: ", 0), 0U) << bad_err;
+  EXPECT_NE(bad_err.find("usage: prog"), std::string::npos);
+  EXPECT_TRUE(bad_out.empty());
+  const auto [help, help_err, help_out] = run({"prog", "--help"});
+  EXPECT_EQ(help, std::optional<int>(0));
+  EXPECT_NE(help_out.find("usage: prog"), std::string::npos);
+  EXPECT_TRUE(help_err.empty());
+  const auto [good, good_err, good_out] = run({"prog", "--count", "3"});
+  EXPECT_FALSE(good.has_value());
+  EXPECT_TRUE(good_err.empty() && good_out.empty());
+}
 
 TEST(Inbox, AStepIsCompleteWhenEverythingAnnouncedHasArrived) {
   dds::Inbox in({kEgo, kMicro, kMeso}, kMicro, limits());
