@@ -23,6 +23,9 @@ struct CarFollowingParams {
   CarFollowingModel model = CarFollowingModel::kIdm;
   IdmParams idm;
   double beta = 1.35;  // modified IDM: interaction ends at gap = beta * s* (paper V)
+  // IDM and the modified IDM: the ACC model's coolness (cah.hpp, Kesting et al. 2010), blending in
+  // the constant-acceleration heuristic where IDM would brake harder; 0 = off (the base model).
+  double coolness = 0.0;
   GippsParams gipps;
   // The Human Driver Model around IDM or the modified IDM (hdm.hpp): reaction time, estimation
   // errors, several anticipated leaders. Off: the base model alone.

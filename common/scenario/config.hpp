@@ -92,6 +92,7 @@ struct DriverPopulation {
   NormalDist min_gap_m;
   double accel_exponent = 4.0;
   double beta = 1.35;
+  double coolness = 0.0;  // the ACC model's c (behaviour/cah.hpp); 0 = off
   NormalDist politeness;
   double change_threshold_mps2 = 0.1;
   double right_bias_mps2 = 0.3;
@@ -143,6 +144,7 @@ struct EgoDriverConfig {
   double min_gap_m = 2.0;
   bool lane_changes = true;
   double politeness = 0.2;
+  double coolness = 0.0;  // the ACC model's c (behaviour/cah.hpp); 0 = plain IDM
   std::vector<std::pair<double, double>> profile;  // (s_m, speed_mps), increasing s
   std::vector<EgoStopConfig> stops;                // increasing at_s
 };

@@ -47,6 +47,7 @@ DriverPopulation resolve_driver(const Driver& d) {
   p.min_gap_m = dist_or(d.has_min_gap_m(), d.min_gap_m(), kDefaultMinGap_m);
   p.accel_exponent = d.accel_exponent();
   p.beta = d.beta();
+  p.coolness = d.coolness();
   p.politeness = dist_or(d.has_politeness(), d.politeness(), kDefaultPoliteness);
   p.change_threshold_mps2 = d.change_threshold_mps2();
   p.right_bias_mps2 = d.right_bias_mps2();
@@ -166,6 +167,7 @@ EgoConfig resolve_ego(const Ego& e) {
   c.driver.min_gap_m = d.min_gap_m();
   c.driver.lane_changes = d.lane_changes();
   c.driver.politeness = d.politeness();
+  c.driver.coolness = d.coolness();
   for (const auto& st : d.stop()) c.driver.stops.push_back({st.at_s(), st.duration_s(), st.speed_kph() / 3.6});
   if (e.has_speed_profile()) {
     c.driver.use_speed_profile = true;

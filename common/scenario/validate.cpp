@@ -33,6 +33,8 @@ constexpr double kMaxVehicleLength_m = 30.0;
 constexpr double kMaxVehicleWidth_m = 3.5;
 constexpr double kMaxFlow_veh_per_h = 10000.0;
 constexpr double kMaxDesiredSpeed_kph = 250.0;
+// The ACC model's coolness: c = 1 would drop IDM altogether (CAH alone keeps no desired gap).
+constexpr double kMaxCoolness = 0.999;
 
 void check_run(const Cursor& c, const Scenario& s) {
   if (!c.has("name") || s.name().empty()) c.fail("name", "is required");
@@ -178,6 +180,7 @@ void check_ego(const Cursor& top, const Scenario& s) {
     dc.range("comfort_decel_mps2", d.comfort_decel_mps2(), 0.0, 10.0, true);
     dc.range("min_gap_m", d.min_gap_m(), 0.0, 20.0);
     dc.range("politeness", d.politeness(), 0.0, 1.0);
+    dc.range("coolness", d.coolness(), 0.0, kMaxCoolness);
     for (int i = 0; i < d.stop_size(); ++i) {
       const Cursor sc = dc.child(d.stop(i), "stop", i);
       sc.range("at_s", d.stop(i).at_s(), 0.0, s.duration_s());

@@ -6,6 +6,8 @@ namespace entourage::scenario::detail {
 
 namespace {
 constexpr double kMaxDesiredSpeed_kph = 250.0;
+// The ACC model's coolness: c = 1 would drop IDM altogether (CAH alone keeps no desired gap).
+constexpr double kMaxCoolness = 0.999;
 constexpr double kMaxReactionTime_s = 3.0;
 constexpr int kMaxAnticipatedLeaders = 8;  // as far as traffic/driving.cpp anticipates
 
@@ -58,6 +60,10 @@ void check_driver(const Cursor& c, const Driver& d) {
   c.range("accel_exponent", d.accel_exponent(), 0.0, 20.0, true);
   // beta = 1 would cut the interaction off where it is largest (a jump at s = s*): above 1 only.
   c.range("beta", d.beta(), 1.0, 10.0, true);
+  c.range("coolness", d.coolness(), 0.0, kMaxCoolness);
+  if (cf == CarFollowingModel::kGipps && d.coolness() > 0.0) {
+    c.fail("coolness", "the ACC model's heuristic blends with idm or modified_idm, not gipps");
+  }
   c.range("change_threshold_mps2", d.change_threshold_mps2(), 0.0, 5.0);
   c.range("right_bias_mps2", d.right_bias_mps2(), -5.0, 5.0);
   c.range("safe_decel_mps2", d.safe_decel_mps2(), 0.0, 15.0, true);
@@ -66,6 +72,7 @@ void check_driver(const Cursor& c, const Driver& d) {
     if (cf == CarFollowingModel::kGipps) {
       c.fail("human_driver", "the Human Driver Model wraps idm or modified_idm, not gipps");
     }
+    if (d.coolness() > 0.0) c.fail("coolness", "the ACC model's heuristic is not combined with human_driver");
     check_human_driver(c.child(d.human_driver(), "human_driver"), d.human_driver());
   }
 }

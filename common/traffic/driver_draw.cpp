@@ -42,6 +42,7 @@ DriverParams draw_driver(const VehicleTypeConfig& type, double desired_speed_mps
   idm.min_gap_m = draw(pop.min_gap_m, rng);
   idm.accel_exponent = pop.accel_exponent;
   p.car_following.beta = pop.beta;
+  p.car_following.coolness = pop.coolness;
   p.lane_change = lane_change_model_by_name(pop.lane_change).value_or(LaneChangeModel::kMobil);
   p.mobil.politeness = draw(pop.politeness, rng);
   p.mobil.change_threshold_mps2 = pop.change_threshold_mps2;

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -82,6 +84,33 @@ TEST(Scenario, UnknownModelIsRefused) {
   const Loaded l = load_file(kDir + "bad_unknown_model.pbtxt");
   EXPECT_FALSE(l.ok());
   EXPECT_TRUE(has_problem(l, 13, "vehicle_type[0].driver.car_following", "\"idn\"")) << all(l);
+}
+
+// The ACC model's coolness: below 1, only with idm or modified_idm and without the HDM; resolved
+// for a type's drivers and for the ego.
+TEST(Scenario, CoolnessIsCheckedAndResolved) {
+  const auto minimal_with = [](const std::string& from, const std::string& to) {
+    std::ifstream in(kDir + "minimal.pbtxt");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return load_text(text.replace(at, from.size(), to), "minimal.pbtxt");
+  };
+  const Loaded good = minimal_with("car_following: \"idm\"", "car_following: \"idm\" coolness: 0.99");
+  ASSERT_TRUE(good.ok()) << all(good);
+  EXPECT_DOUBLE_EQ(good.config.vehicle_types[0].driver.coolness, 0.99);
+  const Loaded ego = minimal_with("idm { desired_speed_kph: 110 }", "idm { desired_speed_kph: 110 coolness: 0.5 }");
+  ASSERT_TRUE(ego.ok()) << all(ego);
+  EXPECT_DOUBLE_EQ(ego.config.ego.driver.coolness, 0.5);
+  const Loaded one = minimal_with("car_following: \"idm\"", "car_following: \"idm\" coolness: 1");
+  EXPECT_TRUE(has_problem(one, 13, "vehicle_type[0].driver.coolness", "[0, 0.999]")) << all(one);
+  const Loaded gipps = minimal_with("car_following: \"idm\"", "car_following: \"gipps\" coolness: 0.9");
+  EXPECT_TRUE(has_problem(gipps, 13, "vehicle_type[0].driver.coolness", "not gipps")) << all(gipps);
+  const Loaded hdm =
+      minimal_with("car_following: \"idm\"", "car_following: \"idm\" coolness: 0.9 human_driver { }");
+  EXPECT_TRUE(has_problem(hdm, 13, "vehicle_type[0].driver.coolness", "human_driver")) << all(hdm);
+  const Loaded bad_ego = minimal_with("idm { desired_speed_kph: 110 }", "idm { desired_speed_kph: 110 coolness: -1 }");
+  EXPECT_TRUE(has_problem(bad_ego, 23, "ego.idm.coolness", "got -1")) << all(bad_ego);
 }
 
 TEST(Scenario, MissingFileIsReported) {

@@ -31,6 +31,7 @@ DriverParams ego_driver(const EgoConfig& e, const DrivingEnvironment& env, std::
   idm.max_accel_mps2 = e.driver.max_accel_mps2;
   idm.comfort_decel_mps2 = e.driver.comfort_decel_mps2;
   idm.min_gap_m = e.driver.min_gap_m;
+  d.car_following.coolness = e.driver.coolness;
   d.lane_change = ego_lane_changes(e, env);
   d.mobil.politeness = e.driver.politeness;
   d.rng_state = Random::derived(seed, kEgoDriverStreamLabel).next_u64();
