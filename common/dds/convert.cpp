@@ -218,6 +218,7 @@ Handoff from_msg(const msg::Handoff& m) {
   p.car_following.idm = {d.desired_speed_mps(), d.time_gap_s(), d.max_accel_mps2(), d.comfort_decel_mps2(),
                          d.min_gap_m(), d.accel_exponent()};
   p.car_following.beta = d.beta();
+  p.car_following.coolness = d.coolness();
   p.car_following.gipps = {d.gipps_reaction_time_s(), d.gipps_max_decel_mps2(), d.gipps_leader_decel_estimate_mps2()};
   p.car_following.human_driver = d.human_driver();
   p.car_following.hdm = {d.hdm_reaction_time_s(), d.hdm_anticipated_leaders(), d.hdm_distance_error(),
@@ -279,6 +280,7 @@ msg::Handoff to_msg(const Handoff& h, double time_s, const Road& road) {
   d.min_gap_m(p.car_following.idm.min_gap_m);
   d.accel_exponent(p.car_following.idm.accel_exponent);
   d.beta(p.car_following.beta);
+  d.coolness(p.car_following.coolness);
   d.politeness(p.mobil.politeness);
   d.change_threshold_mps2(p.mobil.change_threshold_mps2);
   d.right_bias_mps2(p.mobil.right_bias_mps2);
@@ -393,6 +395,7 @@ std::optional<std::string> check(const msg::Handoff& m, const SampleLimits& limi
       m.driver().comfort_decel_mps2() <= 0.0) {
     return "driver parameters must be positive";
   }
+  if (!(m.driver().coolness() >= 0.0 && m.driver().coolness() < 1.0)) return "coolness must be in [0, 1)";
   if (auto e = check_control(m.control(), limits)) return e;
   return std::nullopt;
 }

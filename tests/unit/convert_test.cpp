@@ -41,6 +41,7 @@ Vehicle sample_vehicle() {
   v.lane_change = {0, 0, LaneChangePhase::kNone, 0.0, 4.5, 12.0, 0.3};
   v.driver.car_following.idm = {25.0, 1.7, 0.8, 1.6, 3.0, 4.0};
   v.driver.car_following.beta = 1.4;
+  v.driver.car_following.coolness = 0.99;
   v.driver.lane_change = LaneChangeModel::kNone;
   v.driver.mobil = {0.4, 0.15, 0.25, 3.5};
   v.driver.max_decel_mps2 = 6.0;
@@ -72,6 +73,7 @@ TEST(Convert, HandoffRoundTripKeepsTheWholeVehicle) {
   EXPECT_DOUBLE_EQ(b.speed_mps, a.speed_mps);
   EXPECT_DOUBLE_EQ(b.driver.car_following.idm.time_gap_s, 1.7);
   EXPECT_DOUBLE_EQ(b.driver.car_following.beta, 1.4);
+  EXPECT_DOUBLE_EQ(b.driver.car_following.coolness, 0.99);
   EXPECT_EQ(b.driver.lane_change, LaneChangeModel::kNone);
   EXPECT_DOUBLE_EQ(b.driver.mobil.politeness, 0.4);
   EXPECT_TRUE(b.driver.keep_right);
@@ -135,6 +137,10 @@ TEST(Convert, BadSamplesAreRefusedWithAReason) {
                           0.1, road);
   h.handoff_sequence(0);
   EXPECT_TRUE(check(h, limits()).has_value());
+  h.handoff_sequence(1);
+  EXPECT_FALSE(check(h, limits()).has_value());
+  h.driver().coolness(1.0);  // the ACC model without IDM: no desired gap at all
+  EXPECT_EQ(check(h, limits()).value_or(""), "coolness must be in [0, 1)");
 }
 
 ActorControl sample_control() {
