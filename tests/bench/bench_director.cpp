@@ -54,6 +54,7 @@ std::string cause_of(const std::string& detail) {
 
 void print_play(const std::string& name, const std::vector<bench::PlayRunResult>& runs,
                 const std::vector<bench::EgoVariant>& variants) {
+  std::vector<double> pos_t2, speed_t2;  // as the ego passed trigger point 2
   std::vector<double> pos, speed, est, a_acc, a_dec, a_jerk, o_acc, o_dec, o_jerk, waits, beyond;
   int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
   std::map<std::string, int> causes;
@@ -70,6 +71,10 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
       if (r.handover_wait_s < kAtTrigger_s) ++at_trigger;
     } else {
       ++causes[r.failure.empty() ? std::string("never reached trigger point 2") : cause_of(r.failure)];
+    }
+    if (r.position_error_at_trigger2_m >= 0.0) {
+      pos_t2.push_back(r.position_error_at_trigger2_m);
+      speed_t2.push_back(std::abs(r.speed_error_at_trigger2_mps));
     }
     pos.push_back(std::abs(r.position_error_m));
     speed.push_back(std::abs(r.speed_error_mps));
@@ -100,6 +105,9 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
               percentile(waits, 1.0), mean(beyond), percentile(beyond, 0.95), percentile(beyond, 1.0));
   std::printf("handover position error (m)    mean %.2f   p95 %.2f   (largest over the roles)\n", mean(pos), percentile(pos, 0.95));
   std::printf("handover speed error (km/h)    mean %.2f   p95 %.2f\n", 3.6 * mean(speed), 3.6 * percentile(speed, 0.95));
+  std::printf("errors on passing trigger point 2 (%zu runs): position mean %.2f  p95 %.2f m, speed mean %.2f  "
+              "p95 %.2f km/h\n",
+              pos_t2.size(), mean(pos_t2), percentile(pos_t2, 0.95), 3.6 * mean(speed_t2), 3.6 * percentile(speed_t2, 0.95));
   std::printf("start-time estimate at trigger 1, |error| (s): mean %.2f   p95 %.2f\n", mean(est), percentile(est, 0.95));
   std::printf("while being moved into place (inner region), per run largest: median / p95 / max\n");
   std::printf("  actors      accel %.2f / %.2f / %.2f m/s2   decel %.2f / %.2f / %.2f m/s2   jerk %.1f / %.1f / %.1f m/s3\n",

@@ -90,6 +90,11 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
                      rep.position_error_m, rep.speed_error_mps, rep.detail.c_str());
       }
       r.final_phase = rep.phase;
+      const bool with_errors = rep.phase != director::PlayPhase::kWaiting && rep.phase != director::PlayPhase::kPreparing;
+      if (trigger2_time_s >= 0.0 && r.position_error_at_trigger2_m < 0.0 && with_errors) {
+        r.position_error_at_trigger2_m = std::abs(rep.position_error_m);
+        r.speed_error_at_trigger2_mps = rep.speed_error_mps;
+      }
       if (rep.phase == director::PlayPhase::kPreparing && first_estimate_s < 0.0 && rep.estimated_start_time_s >= 0.0) {
         first_estimate_s = rep.estimated_start_time_s;
       }
