@@ -1,4 +1,6 @@
 // entourage-meso: the outer regions' mesoscopic simulation as a DDS service (see README.md).
+#include <spdlog/spdlog.h>
+
 #include "dds/region_shell.hpp"
 #include "meso/core/meso_core.hpp"
 
@@ -15,7 +17,14 @@ int meso_main(int argc, char** argv) {
       },
       [](const dds::ServiceContext& ctx) {
         meso::MesoCore core(ctx.scenario.config, ctx.id);
-        return dds::run_region_service(ctx, core);
+        const int rc = dds::run_region_service(ctx, core);
+        const meso::Counters& c = core.counters();
+        spdlog::info("vehicles adopted {}; handed to micro {}, to the other meso {}, to the front zone {}; retired {}; "
+                     "floor-gap emergencies {} vehicle-steps; mandatory lane changes {}, changes called off {}; "
+                     "director commands applied {}; duplicate handoffs {}",
+                     c.adopted, c.to_micro, c.to_other_meso, c.to_front_zone, c.retired, c.emergency_stops,
+                     c.mandatory_lane_changes, c.called_off_lane_changes, c.commands_applied, c.duplicate_handoffs);
+        return rc;
       },
       [&regions](ServiceId* id) -> std::optional<std::string> {
         if (regions == "both") id->instance = kMesoBoth;
