@@ -17,6 +17,7 @@ namespace {
 using detail::check_driver;
 using detail::check_normal;
 using detail::Cursor;
+using detail::kMaxCoolness;
 using detail::fmt;
 using detail::Location;
 using google::protobuf::TextFormat;
@@ -33,8 +34,6 @@ constexpr double kMaxVehicleLength_m = 30.0;
 constexpr double kMaxVehicleWidth_m = 3.5;
 constexpr double kMaxFlow_veh_per_h = 10000.0;
 constexpr double kMaxDesiredSpeed_kph = 250.0;
-// The ACC model's coolness: c = 1 would drop IDM altogether (CAH alone keeps no desired gap).
-constexpr double kMaxCoolness = 0.999;
 
 void check_run(const Cursor& c, const Scenario& s) {
   if (!c.has("name") || s.name().empty()) c.fail("name", "is required");

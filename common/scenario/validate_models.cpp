@@ -6,8 +6,6 @@ namespace entourage::scenario::detail {
 
 namespace {
 constexpr double kMaxDesiredSpeed_kph = 250.0;
-// The ACC model's coolness: c = 1 would drop IDM altogether (CAH alone keeps no desired gap).
-constexpr double kMaxCoolness = 0.999;
 constexpr double kMaxReactionTime_s = 3.0;
 constexpr int kMaxAnticipatedLeaders = 8;  // as far as traffic/driving.cpp anticipates
 
