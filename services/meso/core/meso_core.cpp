@@ -55,15 +55,6 @@ void MesoCore::perceive(const StepInput& in) {
 }
 
 namespace {
-void start_lane_change(Vehicle& v, int lane) {
-  LaneChangeState& lc = v.lane_change;
-  lc.from_lane = v.lane;
-  lc.to_lane = lane;
-  lc.phase = LaneChangePhase::kMoving;
-  lc.phase_elapsed_s = 0.0;
-  lc.duration_s = v.driver.lane_change_duration_s;
-}
-
 // Back to the lane it was leaving (it has hardly moved sideways); the interval before its next
 // change starts again.
 void call_off_lane_change(Vehicle& v) {
@@ -134,7 +125,7 @@ void MesoCore::move() {
       ++counters_.called_off_lane_changes;
     }
     continue_lane_change(v, dt);
-    if (next[i].lane) start_lane_change(v, *next[i].lane);
+    if (next[i].lane) v.lane_change = start_moving(v, *next[i].lane, v.driver.lane_change_duration_s);
   }
 }
 
