@@ -5,26 +5,13 @@
 #include <limits>
 
 #include "dds/convert.hpp"
+#include "dds_test_util.hpp"
 
 namespace entourage::dds {
 namespace {
 
-RoadConfig road_config() {
-  RoadConfig c;
-  c.length_m = 10000.0;
-  c.lanes_forward = 2;
-  c.lanes_backward = 1;
-  c.speed_limit_mps = 30.0;
-  return c;
-}
-
-SampleLimits limits() {
-  SampleLimits l;
-  l.lanes_forward = 2;
-  l.lanes_backward = 1;
-  l.vehicle_types = 2;
-  return l;
-}
+using testing::limits;
+using testing::road_config;
 
 Vehicle sample_vehicle() {
   Vehicle v;

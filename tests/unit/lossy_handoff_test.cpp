@@ -28,6 +28,7 @@
 #include <utility>
 
 #include "dds/region_shell.hpp"
+#include "dds_test_util.hpp"
 
 namespace entourage::dds {
 namespace {
@@ -45,14 +46,8 @@ constexpr Step kLostStep = 2;           // two steps after the handoff, when reg
 constexpr Step kLastStep = kLostStep + 1;
 constexpr double kStep_s = 0.1;
 
-RoadConfig road_config() {
-  RoadConfig c;
-  c.length_m = 10000.0;
-  c.lanes_forward = 2;
-  c.lanes_backward = 1;
-  c.speed_limit_mps = 30.0;
-  return c;
-}
+using testing::limits;
+using testing::road_config;
 
 Vehicle vehicle(std::uint32_t id, double s_m) {
   Vehicle v;
@@ -160,11 +155,7 @@ TEST(LossyHandoff, AStateLostTwoStepsAfterAHandoffIsRepaired) {
   Node region(kDomain, default_qos_file(), "meso", faults);
   const Road road(road_config());
   const ServiceId self{Role::kMeso, 0};
-  SampleLimits limits;
-  limits.lanes_forward = 2;
-  limits.lanes_backward = 1;
-  limits.vehicle_types = 1;
-  RegionPublisher publisher(region, self, road, limits);
+  RegionPublisher publisher(region, self, road, limits());
   const auto deadline = std::chrono::steady_clock::now() + kDiscoveryTimeout;
   while ((region.matched_readers(Topic::kVehicleState) < 1 || peer.matched_writers(Topic::kVehicleState) < 1) &&
          std::chrono::steady_clock::now() < deadline) {
