@@ -54,7 +54,7 @@ std::string cause_of(const std::string& detail) {
 
 void print_play(const std::string& name, const std::vector<bench::PlayRunResult>& runs,
                 const std::vector<bench::EgoVariant>& variants) {
-  std::vector<double> pos_t2, speed_t2;  // as the ego passed trigger point 2
+  std::vector<double> pos_t2, speed_t2;  // on passing trigger point 2
   std::vector<double> pos, speed, est, a_acc, a_dec, a_jerk, o_acc, o_dec, o_jerk, waits, beyond;
   int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
   std::map<std::string, int> causes;

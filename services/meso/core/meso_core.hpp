@@ -61,8 +61,8 @@ class MesoCore {
   void adopt(const StepInput& in);
   void perceive(const StepInput& in);
   void move();
-  // The nearer leader of the lanes it occupies, or the start of a closure of its lane.
-  // The nearest obstacle ahead; `own_lane_only`: not in the lane it is changing to (a change called off).
+  // The nearer leader of the lanes it occupies (of its own lane only if `own_lane_only`: a change
+  // called off), an oncoming vehicle in its lane, or the start of a closure of its lane.
   Ahead ahead_of(const Vehicle& v, bool own_lane_only) const;
   const EquilibriumSpeed& equilibrium_of(const Vehicle& v);
   StepOutput hand_off(const StepInput& in);
