@@ -130,6 +130,7 @@ int run(int argc, char** argv) {
   bool verbose = false;
   bool plain = false;
   bool trace = false;
+  bool trace_traffic = false;
   cli::Args args("entourage-bench-director",
                  "Runs each shipped play many times in lockstep (every core in one process) with varied ego drivers "
                  "and traffic seeds, and prints success, handover errors, the actors' driving against the "
@@ -139,6 +140,7 @@ int run(int argc, char** argv) {
   args.option("seed", "N", "first traffic seed; run i uses seed + i (default 1)", &seed);
   args.flag("verbose", "one line per run as well", &verbose);
   args.flag("trace", "every play report of every run as well (to stderr)", &trace);
+  args.flag("trace-traffic", "the vehicles around the ego every 2 s of every play as well (to stderr)", &trace_traffic);
   args.flag("plain", "the scenario's own ego driver in every run (only the traffic seed varies)", &plain);
   if (const auto rc = args.parse_or_exit(argc, argv)) return *rc;
   if (runs < 1 || runs > 100000) {
@@ -169,14 +171,15 @@ int run(int argc, char** argv) {
       const std::uint64_t s = seed + static_cast<std::uint64_t>(i);
       bench::EgoVariant v{};
       const ScenarioConfig sc = plain ? loaded.config : bench::vary_ego(loaded.config, i, s, &v);
-      results.push_back(bench::run_play(sc, s, trace ? stderr : nullptr));
+      results.push_back(bench::run_play(sc, s, trace ? stderr : nullptr, trace_traffic ? stderr : nullptr));
       variants.push_back(v);
       if (verbose) {
         const bench::PlayRunResult& r = results.back();
-        std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s waited %4.1f s created %d  %s\n",
+        std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s waited %4.1f s created %d "
+                    "overlaps %d/%d  %s\n",
                     i, static_cast<unsigned long long>(s), bench::to_string(v), director::to_string(r.final_phase),
                     r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s, r.handover_wait_s, r.created,
-                    r.failure.c_str());
+                    r.overlaps_with_actor, r.overlaps_other, r.failure.c_str());
       }
     }
     print_play(loaded.config.plays.front().name + " (" + loaded.config.name + ")", results, variants);

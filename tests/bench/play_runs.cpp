@@ -22,6 +22,38 @@ bool share_lane(const ObservedVehicle& a, const ObservedVehicle& b) {
 double bumper_gap_m(const ObservedVehicle& a, const ObservedVehicle& b) {
   return std::abs(a.s_m - b.s_m) - 0.5 * (a.length_m + b.length_m);
 }
+
+// The traffic trace: every kTrafficTraceSteps steps, the vehicles from kTraceBehind_m behind the
+// ego to kTraceAhead_m ahead of it.
+constexpr Step kTrafficTraceSteps = 20;
+constexpr double kTraceBehind_m = 300.0;
+constexpr double kTraceAhead_m = 600.0;
+
+const char* control_mark(ControlMode m) {
+  switch (m) {
+    case ControlMode::kAutonomous: return "";
+    case ControlMode::kTransported: return "T";
+    case ControlMode::kControlled: return "C";
+    case ControlMode::kReleasing: return "R";
+  }
+  return "?";
+}
+
+void trace_traffic(std::FILE* out, const StepInput& in) {
+  std::vector<ObservedVehicle> near;
+  for (const ObservedVehicle& v : in.world_prev) {
+    const double ahead_m = sign(in.ego.direction) * (v.s_m - in.ego.s_m);
+    if (ahead_m > -kTraceBehind_m && ahead_m < kTraceAhead_m) near.push_back(v);
+  }
+  std::sort(near.begin(), near.end(),
+            [](const ObservedVehicle& a, const ObservedVehicle& b) { return a.s_m < b.s_m; });
+  std::fprintf(out, "  t %.1f ego %.0f v %.1f lane %d |", in.ego.time_s, in.ego.s_m, in.ego.speed_mps, in.ego.lane);
+  for (const ObservedVehicle& v : near) {
+    std::fprintf(out, " %s%u@%+.0f/%.1f/L%d%s", v.direction == in.ego.direction ? "" : "<", v.id,
+                 v.s_m - in.ego.s_m, v.speed_mps, v.lane, control_mark(v.control));
+  }
+  std::fprintf(out, "\n");
+}
 }  // namespace
 
 const char* to_string(EgoVariant v) {
@@ -55,7 +87,7 @@ ScenarioConfig vary_ego(ScenarioConfig sc, int index, std::uint64_t seed, EgoVar
   return sc;
 }
 
-PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* trace) {
+PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* trace, std::FILE* traffic) {
   PlayRunResult r;
   WindowCores cores(sc, seed);
   const double dt = sc.step_s;
@@ -114,6 +146,9 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
         end_time_s = in.ego.time_s + sc.plays.front().release_s + kAfterEnd_s;
       }
     }
+    if (traffic != nullptr && k % kTrafficTraceSteps == 0 && r.final_phase != director::PlayPhase::kWaiting) {
+      trace_traffic(traffic, in);
+    }
     // How vehicles in the inner region drove (micro-owned, consecutive steps), and overlaps.
     const bool preparing = r.final_phase == director::PlayPhase::kPreparing || r.final_phase == director::PlayPhase::kCast ||
                            r.final_phase == director::PlayPhase::kTransporting;
@@ -142,6 +177,11 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
         if (!share_lane(a, b) || bumper_gap_m(a, b) >= 0.0) continue;
         if (!overlapping.insert({a.id, b.id}).second) continue;
         const bool actor = a.control != ControlMode::kAutonomous || b.control != ControlMode::kAutonomous;
+        if (trace != nullptr) {
+          std::fprintf(trace, "overlap t %.1f: %u (s %.1f lane %d to %d, %.1f m/s) and %u (s %.1f lane %d to %d, %.1f m/s)\n",
+                       in.ego.time_s, a.id, a.s_m, a.lane, a.target_lane, a.speed_mps, b.id, b.s_m, b.lane,
+                       b.target_lane, b.speed_mps);
+        }
         ++(actor ? r.overlaps_with_actor : r.overlaps_other);
       }
       if (in.ego_prev && a.control != ControlMode::kAutonomous &&

@@ -66,6 +66,9 @@ struct PlayRunResult {
 };
 
 // `trace`: if not null, every play report of the run is printed there, one line each.
-PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* trace = nullptr);
+// `trace`: every play report; `traffic`: every 2 s from trigger point 1 on, the vehicles around the
+// ego ("id@ahead/speed/Llane", `<` oncoming, then T transported, C controlled, R releasing).
+PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* trace = nullptr,
+                       std::FILE* traffic = nullptr);
 
 }  // namespace entourage::bench
