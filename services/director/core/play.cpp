@@ -329,18 +329,36 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   for (const Slot& s : slots) {
     if (s.direction == in.ego.direction) role_lanes.push_back(s.lane);
   }
-  for (std::size_t i = 0; i < in.world.size(); ++i) {
+  const ClearingSituation situation{to_clear, aim.time_s,    in.ego,          aim.ego_s_m,
+                                    role_lanes, in.world, setting_.lanes, setting_.director};
+  // Vehicle i, ours from now on, is told to clear out (a cleared one keeps its last command until
+  // the handover); a speed is given with the lead actors get (drive_speed_mps).
+  auto clear = [&](std::size_t i, const Clearance& c) {
     const ObservedVehicle& v = in.world[i];
-    const bool ours = is_cleared(v.id);
-    if (!ours && !in.available[i]) continue;  // an actor (ours or another play's)
-    const auto c =
-        clear_out(v, to_clear, aim.time_s, in.ego, aim.ego_s_m, role_lanes, setting_.lanes, setting_.director);
-    if (!c) continue;  // not in the way (a cleared one keeps its last command until the handover)
-    if (!ours) {
+    if (!is_cleared(v.id)) {
       cleared_.push_back(v.id);
       in.available[i] = false;
     }
-    command(v.id, transported(c->speed_mps, c->lane), in.step, out);
+    double drive_mps = c.speed_mps;
+    if (drive_mps != kOwnDesiredSpeed_mps) {
+      const double type_accel = accel_of(setting_.type_accel_mps2, v.type_index);
+      drive_mps = drive_speed_mps(drive_mps, v.speed_mps, transport_rate_mps2(setting_.director, type_accel), type_accel);
+    }
+    command(v.id, transported(drive_mps, c.lane), in.step, out);
+  };
+  auto ours_or_free = [&](std::size_t i) { return is_cleared(in.world[i].id) || in.available[i]; };  // not an actor
+  for (std::size_t i = 0; i < in.world.size(); ++i) {
+    if (!ours_or_free(i)) continue;
+    if (const auto c = clear_out(in.world[i], situation)) clear(i, *c);
+  }
+  // Vehicles in an actor's way to its slot make way where they can.
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
+    const ObservedVehicle* actor = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    if (actor == nullptr) continue;
+    for (std::size_t i = 0; i < in.world.size(); ++i) {
+      if (!ours_or_free(i)) continue;
+      if (const auto c = make_way(in.world[i], slots[r], *actor, roles_[r].command_mps, situation)) clear(i, *c);
+    }
   }
   if (time_to_start_s > kHoldLanesBefore_s) return;
   // Shortly before the start, vehicles beside a zone keep their lane (at their own speed), so that

@@ -14,6 +14,14 @@ constexpr double kHoldsUpHorizon_s = 8.0;
 constexpr double kPassedEgoBy_m = 15.0;
 // Extra room around a zone a cleared vehicle must keep.
 constexpr double kZoneMargin_m = 5.0;
+// A cleared vehicle is planned to be out of the zone this long before the start (half the time
+// left, once less than twice this is left): a plan spread over all the time left runs late, as
+// the driver lags its desired speed and the ego's own speed changes move the zone.
+constexpr double kClearEarly_s = 5.0;
+
+double clearing_time_s(double time_left_s) {
+  return time_left_s > 2.0 * kClearEarly_s ? time_left_s - kClearEarly_s : 0.5 * time_left_s;
+}
 
 int passing_lane(int lane, const Lanes& lanes, Direction dir) {
   const int n = lanes.of(dir);
@@ -22,22 +30,23 @@ int passing_lane(int lane, const Lanes& lanes, Direction dir) {
   return lane;
 }
 
-// Is the actor held up in its slot's lane by something it must get past (a slower vehicle ahead
-// of it that is not beyond the slot, or the ego it must pass)?
-bool held_up(const Slot& slot, const ObservedVehicle& actor, double cmd_mps, double slot_p,
+// Is a vehicle that must get to `target_p` (progress along its direction) in `lane` held up there
+// by something it must get past (a slower vehicle ahead of it that is not beyond the target, or
+// the ego it must pass)?
+bool held_up(Direction direction, int lane, double target_p, const ObservedVehicle& actor, double cmd_mps,
              const std::vector<ObservedVehicle>& world, const EgoObservation& ego) {
-  const int dir = sign(slot.direction);
+  const int dir = sign(direction);
   const double p = dir * actor.s_m;
-  if (slot_p <= p) return false;  // it falls back: followers pass it
-  const double horizon = std::min(slot_p, p + std::max(actor.speed_mps, cmd_mps) * kHoldsUpHorizon_s);
+  if (target_p <= p) return false;  // it falls back: followers pass it
+  const double horizon = std::min(target_p, p + std::max(actor.speed_mps, cmd_mps) * kHoldsUpHorizon_s);
   for (const ObservedVehicle& v : world) {
-    if (v.id == actor.id || !occupies(v, slot.direction, slot.lane)) continue;
+    if (v.id == actor.id || !occupies(v, direction, lane)) continue;
     const double q = dir * v.s_m;
     if (q > p && q < horizon && v.speed_mps < cmd_mps - kHoldsUp_mps) return true;
   }
-  if (occupies(ego, slot.direction, slot.lane)) {
+  if (occupies(ego, direction, lane)) {
     const double q = dir * ego.s_m;
-    const bool passing = actor.lane != slot.lane;  // already beside: until it is well past
+    const bool passing = actor.lane != lane;  // already beside: until it is well past
     if (q > p - (passing ? kPassedEgoBy_m : 0.0) && q < horizon) return true;
   }
   return false;
@@ -68,8 +77,10 @@ TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, doubl
   c.drive_mps = drive_speed_mps(c.speed_mps, actor.speed_mps, rate_mps2, type_accel_mps2);
   // Held up on the way: a neighbouring lane to get past, kept until it is past.
   c.lane = slot.lane;
-  if (held_up(slot, actor, c.speed_mps, dir * slot.s_m, world, ego)) {
-    c.lane = actor.lane == slot.lane ? passing_lane(slot.lane, lanes, slot.direction) : actor.lane;
+  if (held_up(slot.direction, slot.lane, dir * slot.s_m, actor, c.speed_mps, world, ego)) {
+    const int pass = actor.lane == slot.lane ? passing_lane(slot.lane, lanes, slot.direction) : actor.lane;
+    // Only by a lane in which it is not held up as well (the ego, or a queue, ahead of it there).
+    if (!held_up(slot.direction, pass, dir * slot.s_m, actor, c.speed_mps, world, ego)) c.lane = pass;
   }
   return c;
 }
@@ -114,20 +125,36 @@ const ZoneAtStart* zone_hit(const std::vector<ZoneAtStart>& zones, const Observe
   return nullptr;
 }
 
-std::optional<Clearance> clear_out(const ObservedVehicle& v, const std::vector<ZoneAtStart>& zones, double time_left_s,
-                                   const EgoObservation& ego, double ego_s_then_m, const std::vector<int>& role_lanes,
-                                   const Lanes& lanes, const DirectorConfig& cfg) {
-  const double t = std::max(time_left_s, 0.0);
-  const double s_then = v.s_m + sign(v.direction) * v.speed_mps * t;
-  const ZoneAtStart* hit = zone_hit(zones, v, s_then);
+ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>& zones, double gap_m) {
+  ZoneAtStart out = zone;
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (const ZoneAtStart& z : zones) {
+      if (z.direction != out.direction || z.lane != out.lane) continue;
+      if (z.to_s_m + gap_m <= out.from_s_m || z.from_s_m - gap_m >= out.to_s_m) continue;
+      if (z.from_s_m < out.from_s_m || z.to_s_m > out.to_s_m) {
+        out.from_s_m = std::min(out.from_s_m, z.from_s_m);
+        out.to_s_m = std::max(out.to_s_m, z.to_s_m);
+        grew = true;
+      }
+    }
+  }
+  return out;
+}
+
+std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSituation& at) {
+  const double t = std::max(at.time_left_s, 0.0);
+  const int dir = sign(v.direction);
+  const double s_then = v.s_m + dir * v.speed_mps * t;
+  const ZoneAtStart* hit = zone_hit(at.zones, v, s_then);
   if (hit == nullptr) return std::nullopt;
   // A neighbouring lane that no zone and no role needs.
   auto free_lane = [&](int lane) {
-    if (lane < 0 || lane >= lanes.of(v.direction)) return false;
-    for (const ZoneAtStart& z : zones) {
+    if (lane < 0 || lane >= at.lanes.of(v.direction)) return false;
+    for (const ZoneAtStart& z : at.zones) {
       if (z.lane == lane && z.direction == v.direction) return false;
     }
-    return std::find(role_lanes.begin(), role_lanes.end(), lane) == role_lanes.end();
+    return std::find(at.role_lanes.begin(), at.role_lanes.end(), lane) == at.role_lanes.end();
   };
   for (int lane : {v.lane - 1, v.lane + 1}) {  // the right one first
     if (free_lane(lane)) return Clearance{kOwnDesiredSpeed_mps, lane};
@@ -135,33 +162,68 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const std::vector<Z
   // On one lane a vehicle can only get out of a zone ahead of the ego by passing what is ahead of
   // it, or fall behind the ego by being passed: it is left to its own driving (it overtakes a
   // slow actor by itself when the oncoming traffic lets it).
-  if (t <= 0.0 || lanes.of(v.direction) <= 1) return std::nullopt;
-  // Ahead of the zone or behind it, whichever needs the smaller change of speed.
-  const int dir = sign(v.direction);
-  const double front_p = dir > 0 ? hit->to_s_m : -hit->from_s_m;
-  const double rear_p = dir > 0 ? hit->from_s_m : -hit->to_s_m;
+  if (t <= 0.0 || at.lanes.of(v.direction) <= 1) return std::nullopt;
+  // Ahead of the zone or behind it, whichever needs the smaller change of speed; the zone joined
+  // with those of its lane too close to it to stand between.
+  const ZoneAtStart zone = joined_zone(*hit, at.zones, v.length_m + 2.0 * kZoneMargin_m);
+  const double front_p = dir > 0 ? zone.to_s_m : -zone.from_s_m;
+  const double rear_p = dir > 0 ? zone.from_s_m : -zone.to_s_m;
   const double p = dir * v.s_m;
   const double ahead_p = front_p + 0.5 * v.length_m + kZoneMargin_m;
   const double behind_p = rear_p - 0.5 * v.length_m - kZoneMargin_m;
+  const DirectorConfig& cfg = at.cfg;
   const double low = std::max(0.0, std::max(cfg.min_speed_mps, v.speed_mps - cfg.max_speed_offset_mps));
   const double high = v.speed_mps + cfg.max_speed_offset_mps;
   // In the ego's lane it cannot get past the ego, nor the ego past it: a vehicle ahead of the ego
   // stays ahead (asked to fall back behind a zone in front of the ego, it would hold the ego up,
   // and the zone, which moves with the ego, with it).
+  const EgoObservation& ego = at.ego;
   const bool with_ego = occupies(ego, v.direction, v.lane);
-  const double ego_then_p = dir * ego_s_then_m;
+  const double ego_then_p = dir * at.ego_s_then_m;
   const double room_p = 0.5 * (v.length_m + ego.length_m) + kZoneMargin_m;
   auto keeps_order = [&](double target_p) {
     if (!with_ego) return true;
     return dir * v.s_m > dir * ego.s_m ? target_p > ego_then_p + room_p : target_p < ego_then_p - room_p;
   };
+  // Out early (clearing_time_s). When neither way is within the band, the edge of the band
+  // towards the first way that keeps the order: as far out as it gets (it was left with its last
+  // command before, which had asked for too little).
+  const double t_plan = clearing_time_s(t);
   std::optional<Clearance> best;
+  std::optional<Clearance> closest;
   for (double target_p : {ahead_p, behind_p}) {
-    const double speed = (target_p - p) / t;
-    if (speed < low || speed > high || !keeps_order(target_p)) continue;
+    if (!keeps_order(target_p)) continue;
+    const double speed = (target_p - p) / t_plan;
+    if (speed < low || speed > high) {
+      if (!closest) closest = Clearance{std::clamp(speed, low, high), v.lane};
+      continue;
+    }
     if (!best || std::abs(speed - v.speed_mps) < std::abs(best->speed_mps - v.speed_mps)) best = Clearance{speed, v.lane};
   }
-  return best;
+  return best ? best : closest;
+}
+
+std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, const ObservedVehicle& actor,
+                                  double actor_cmd_mps, const ClearingSituation& at) {
+  if (v.id == actor.id || v.direction != slot.direction || !occupies(v, slot.direction, slot.lane)) return std::nullopt;
+  if (v.lane != v.target_lane) return std::nullopt;  // already changing lanes
+  const int dir = sign(slot.direction);
+  const double p = dir * actor.s_m;
+  const double q = dir * v.s_m;
+  const double horizon = std::min(dir * slot.s_m, p + std::max(actor.speed_mps, actor_cmd_mps) * kHoldsUpHorizon_s);
+  if (q <= p || q >= horizon || v.speed_mps >= actor_cmd_mps - kHoldsUp_mps) return std::nullopt;
+  const double s_then = v.s_m + dir * v.speed_mps * std::max(at.time_left_s, 0.0);
+  auto clear_lane = [&](int lane) {
+    if (lane < 0 || lane >= at.lanes.of(v.direction)) return false;
+    if (std::find(at.role_lanes.begin(), at.role_lanes.end(), lane) != at.role_lanes.end()) return false;
+    return std::none_of(at.zones.begin(), at.zones.end(), [&](const ZoneAtStart& z) {
+      return z.direction == v.direction && in_zone(z, lane, s_then, v.length_m + 2.0 * kZoneMargin_m);
+    });
+  };
+  for (int lane : {v.lane - 1, v.lane + 1}) {  // the right one first
+    if (clear_lane(lane)) return Clearance{kOwnDesiredSpeed_mps, lane};
+  }
+  return std::nullopt;
 }
 
 }  // namespace entourage::director

@@ -11,12 +11,14 @@
 // it instead of jumping (the plan's rate is lower than that, for the driver's lag).
 //
 // Lane: the slot's lane, except that an actor that must get past a slower vehicle in that lane
-// (or past the ego) first takes a neighbouring lane.
+// (or past the ego) first takes a neighbouring lane, if it is not held up there as well (behind
+// the ego, or a queue); the vehicles in its way are asked to make way (make_way).
 //
 // Clear zones: a vehicle that would be inside a zone at the start (at its present speed) is asked
 // to leave: to a neighbouring lane that is no zone's, or to be ahead of the zone or behind it at
-// the start by a speed within the band around its own (not on one lane per direction: there it
-// would have to overtake or be overtaken, which is left to its own driving).
+// the start by a speed within the band around its own, planned to be out a few seconds early
+// (not on one lane per direction: there it would have to overtake or be overtaken, which is left
+// to its own driving).
 
 #include <optional>
 #include <vector>
@@ -80,14 +82,32 @@ bool in_zone(const ZoneAtStart& z, int lane, double s_m, double length_m);
 // The first zone `v` overlaps with its centre at `s_m` (in either lane it occupies), or nullptr.
 const ZoneAtStart* zone_hit(const std::vector<ZoneAtStart>& zones, const ObservedVehicle& v, double s_m);
 
+// `zone` with every zone of its lane that comes within `gap_m` of it (repeatedly): the stretch a
+// vehicle must be ahead of or behind, since it cannot stand between them.
+ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>& zones, double gap_m);
+
 // What a vehicle that would stand in a zone at the start is asked to do, if anything can help.
 struct Clearance {
   double speed_mps = 0.0;  // desired speed (kOwnDesiredSpeed_mps: its own, when it only changes lane)
   int lane = -1;
 };
-// `ego_s_then_m`: where the ego is at the time the zones are for (`time_left_s` from now).
-std::optional<Clearance> clear_out(const ObservedVehicle& v, const std::vector<ZoneAtStart>& zones, double time_left_s,
-                                   const EgoObservation& ego, double ego_s_then_m, const std::vector<int>& role_lanes,
-                                   const Lanes& lanes, const DirectorConfig& cfg);
+struct ClearingSituation {
+  const std::vector<ZoneAtStart>& zones;
+  double time_left_s = 0.0;             // until the time the zones are for
+  const EgoObservation& ego;
+  double ego_s_then_m = 0.0;            // where the ego is then
+  const std::vector<int>& role_lanes;   // lanes of the actors of the ego's direction
+  const std::vector<ObservedVehicle>& world;
+  const Lanes& lanes;
+  const DirectorConfig& cfg;
+};
+std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSituation& at);
+
+// A vehicle that holds an actor up on its way to its slot (in the slot's lane, ahead of the actor
+// within kHoldsUpHorizon_s at its speed and not beyond the slot, slower than the actor's command
+// by kHoldsUp_mps) is asked to make way: to a neighbouring lane that is no actor's and where it
+// stands clear of every zone at the start, at its own speed. Nothing if there is none.
+std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, const ObservedVehicle& actor,
+                                  double actor_cmd_mps, const ClearingSituation& at);
 
 }  // namespace entourage::director
