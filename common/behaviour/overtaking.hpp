@@ -80,6 +80,10 @@ struct OvertakingParams {
   // s0))). Drivers cut back in at short time gaps when the oncoming lane is needed; the full
   // return_time_gap_s is what they aim for, not what they insist on.
   double return_decel_mps2 = 3.0;
+  // With an oncoming vehicle about to meet it, the overtaker accepts a gap up to its own braking
+  // limit; its new follower, whose brakes it cannot know, is asked at most this: the weakest
+  // braking limit among the scenario's vehicle types (set from them, not a scenario field).
+  double follower_max_decel_mps2 = std::numeric_limits<double>::infinity();
 };
 
 enum class OvertakingKind : std::uint8_t { kFlying = 0, kAccelerated = 1 };

@@ -292,6 +292,9 @@ ScenarioConfig resolve(const Scenario& s) {
   c.director = resolve_director(s.director());
   c.speed_adaptation = resolve_speed_adaptation(s.speed_adaptation());
   c.overtaking = resolve_overtaking(s.overtaking());
+  for (const VehicleTypeConfig& t : c.vehicle_types) {
+    c.overtaking.follower_max_decel_mps2 = std::min(c.overtaking.follower_max_decel_mps2, t.max_decel_mps2);
+  }
   return c;
 }
 

@@ -65,28 +65,6 @@ bool oncoming_threat(const Vehicle& v, const LaneIndex& index, const DrivingEnvi
   return env.rules().oncoming_too_close(gap_m, v.speed_mps + o->speed_mps);
 }
 
-// Lateral move back into the own lane: the gap beside it fits when neither the overtaker behind
-// its new leader nor the new follower behind the overtaker has to brake harder than
-// return_decel_mps2 (the follower is assumed to keep the overtaker's standstill gap); with an
-// oncoming vehicle about to meet it, up to the overtaker's own braking limit (taken for the
-// follower's too).
-bool can_return(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env) {
-  const double limit_mps2 =
-      oncoming_threat(v, index, env) ? v.driver.max_decel_mps2 : env.overtaking().return_decel_mps2;
-  const double min_gap_m = v.driver.car_following.idm.min_gap_m;
-  const LaneIndex::Neighbours n = index.neighbours(v.direction, own_lane(v, env), v.progress_m(), v.id);
-  if (n.leader != nullptr) {
-    const double gap_m = gap_between(*n.leader, v.progress_m(), v.length_m);
-    if (keep_gap_decel_mps2(gap_m, min_gap_m, v.speed_mps - n.leader->speed_mps) > limit_mps2) return false;
-  }
-  if (n.follower != nullptr) {
-    const Occupant self{v.id, v.progress_m(), v.speed_mps, 0.0, v.length_m};
-    const double gap_m = gap_between(self, n.follower->progress_m, n.follower->length_m);
-    if (keep_gap_decel_mps2(gap_m, min_gap_m, n.follower->speed_mps - v.speed_mps) > limit_mps2) return false;
-  }
-  return true;
-}
-
 OvertakingStep consider_start(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env,
                               double desired_speed_mps) {
   const OvertakingParams& p = env.overtaking();
@@ -258,6 +236,27 @@ OvertakingStep continue_return(const Vehicle& v, const LaneIndex& index, const D
   return out;
 }
 }  // namespace
+
+bool can_return(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env) {
+  const bool threat = oncoming_threat(v, index, env);
+  const double leader_limit_mps2 = threat ? v.driver.max_decel_mps2 : env.overtaking().return_decel_mps2;
+  const double follower_limit_mps2 =
+      threat ? std::min(v.driver.max_decel_mps2, env.overtaking().follower_max_decel_mps2)
+             : env.overtaking().return_decel_mps2;
+  const double min_gap_m = v.driver.car_following.idm.min_gap_m;
+  const LaneIndex::Neighbours n = index.neighbours(v.direction, own_lane(v, env), v.progress_m(), v.id);
+  if (n.leader != nullptr) {
+    const double gap_m = gap_between(*n.leader, v.progress_m(), v.length_m);
+    if (keep_gap_decel_mps2(gap_m, min_gap_m, v.speed_mps - n.leader->speed_mps) > leader_limit_mps2) return false;
+  }
+  if (n.follower != nullptr) {
+    const Occupant self{v.id, v.progress_m(), v.speed_mps, 0.0, v.length_m};
+    const double gap_m = gap_between(self, n.follower->progress_m, n.follower->length_m);
+    if (keep_gap_decel_mps2(gap_m, min_gap_m, n.follower->speed_mps - v.speed_mps) > follower_limit_mps2) return false;
+  }
+  return true;
+}
+
 
 bool overtakes(const Vehicle& v, const DrivingEnvironment& env) {
   return env.two_way() && v.driver.lane_change == LaneChangeModel::kOvertaking;

@@ -52,6 +52,13 @@ struct OvertakingStep {
 OvertakingStep overtaking_step(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env,
                                double desired_speed_mps);
 
+// Lateral move back into the own lane: the gap beside it fits when neither the overtaker behind
+// its new leader nor the new follower behind the overtaker has to brake harder than
+// return_decel_mps2 (the follower is assumed to keep the overtaker's standstill gap); with an
+// oncoming vehicle about to meet it, up to the overtaker's own braking limit, and for the follower
+// up to follower_max_decel_mps2 as well (a truck behind brakes less hard than a car can).
+bool can_return(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env);
+
 // Does this driver overtake in the oncoming lane here at all?
 bool overtakes(const Vehicle& v, const DrivingEnvironment& env);
 

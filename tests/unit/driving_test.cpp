@@ -170,6 +170,25 @@ TEST(Overtaking, AbortsWhenAnOncomingCarAppearsAndReturnsBehindWithoutAHeadOnCol
   EXPECT_GT(w.min_clearance_m, 0.0);
 }
 
+TEST(Overtaking, AnAbortingOvertakerFacingAnOncomingCarAsksNoMoreOfATruckBehindThanItsBrakesGive) {
+  // A 30-minute rural drive: a car aborting in the oncoming lane, nearly stopped face to face with
+  // an oncoming car, cut back in 9 m ahead of a truck closing at 11 m/s; keeping the car's 2 m
+  // standstill gap needed 8.8 m/s^2 of the truck, which brakes at 6 at most: they touched.
+  ScenarioConfig sc = rural();
+  Vehicle me = car(1, Direction::kForward, 1, 6395.2, 1.7, 25.0, LaneChangeModel::kOvertaking);
+  me.driver.max_decel_mps2 = 9.0;
+  LaneIndex index(1, 1);
+  add_to_index(index, Direction::kForward, 1, 1, 1, 6395.2, 1.7, 0.0, 4.5);
+  add_to_index(index, Direction::kForward, 0, 0, 2, 6375.66, 12.8, 0.0, 16.5);   // the truck
+  add_to_index(index, Direction::kBackward, 0, 0, 3, -6410.0, 1.0, 0.0, 4.5);   // the oncoming car
+  index.sort();
+  sc.overtaking.follower_max_decel_mps2 = 6.0;
+  EXPECT_FALSE(can_return(me, index, DrivingEnvironment(sc)));
+  // Trucks braking like cars: the gap would do.
+  sc.overtaking.follower_max_decel_mps2 = 9.0;
+  EXPECT_TRUE(can_return(me, index, DrivingEnvironment(sc)));
+}
+
 TEST(Overtaking, NoOvertakingInARestrictedZoneOrOnAFreeway) {
   ScenarioConfig sc = rural();
   sc.road.no_overtaking.push_back({900.0, 1800.0, true, true});

@@ -58,6 +58,11 @@ TEST(Scenario, DefaultsAndUnitsAreResolved) {
   EXPECT_DOUBLE_EQ(d.time_gap_s.sd, 0.0);
   EXPECT_DOUBLE_EQ(d.beta, 1.35);
   EXPECT_NEAR(c.ego.driver.desired_speed_mps, 110.0 / 3.6, 1e-12);
+  // An overtaker cutting back in asks a follower no more than the weakest brakes of the types.
+  EXPECT_DOUBLE_EQ(c.overtaking.follower_max_decel_mps2, c.vehicle_types[0].max_decel_mps2);
+  const Loaded rural = load_file(std::string(ENTOURAGE_SOURCE_DIR) + "/scenarios/rural_slow_truck.pbtxt");
+  ASSERT_TRUE(rural.ok()) << all(rural);
+  EXPECT_DOUBLE_EQ(rural.config.overtaking.follower_max_decel_mps2, 6.0);  // the trucks'
 }
 
 TEST(Scenario, SyntaxErrorNamesTheLine) {
