@@ -301,13 +301,17 @@ TEST(Transport, AClearedVehicleAheadOfTheEgoThatCannotMakeItInTimeDrivesAtTheTop
   EXPECT_EQ(top->lane, 0);
 }
 
-TEST(Transport, AnActorHeldUpPassesOnlyByALaneInWhichItIsNotHeldUpAsWell) {
+// A cutter on its way: its slot in the left lane of two, 12 m ahead of the ego at the start, 40 s
+// from now; the actor 100 m behind the ego in that lane, the ego in the right lane.
+struct CutterOnItsWay : ::testing::Test {
   DirectorConfig cfg;
   const Lanes lanes{2, 0};
-  // A cutter's slot: the left lane, 12 m ahead of the ego at the start, 40 s from now.
   const Slot slot{Direction::kForward, 1, 3012.0, 26.0};
   const ObservedVehicle actor = vehicle(1, 1900.0, 26.0, 1);
   const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0, 0);
+};
+
+TEST_F(CutterOnItsWay, AnActorHeldUpPassesOnlyByALaneInWhichItIsNotHeldUpAsWell) {
   // A slower vehicle 50 m ahead of it in the left lane, the ego ahead of it in the right lane:
   // passing on the right would leave it behind the ego. It stays in the slot's lane.
   const std::vector<ObservedVehicle> world{actor, vehicle(2, 1950.0, 24.0, 1)};
@@ -319,12 +323,7 @@ TEST(Transport, AnActorHeldUpPassesOnlyByALaneInWhichItIsNotHeldUpAsWell) {
   EXPECT_EQ(pass.lane, 0);
 }
 
-TEST(Transport, AVehicleHoldingAnActorUpOnItsWayMakesWayToALaneClearOfTheZones) {
-  DirectorConfig cfg;
-  const Lanes lanes{2, 0};
-  const Slot slot{Direction::kForward, 1, 3012.0, 26.0};
-  const ObservedVehicle actor = vehicle(1, 1900.0, 26.0, 1);
-  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0, 0);
+TEST_F(CutterOnItsWay, AVehicleHoldingAnActorUpOnItsWayMakesWayToALaneClearOfTheZones) {
   // The ego's lane is a zone from 3 to 60 m ahead of it at the start (40 s from now, at 3000 m).
   const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 3003.0, 3060.0}};
   const std::vector<int> role_lanes{1};
