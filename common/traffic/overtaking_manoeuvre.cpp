@@ -257,7 +257,6 @@ bool can_return(const Vehicle& v, const LaneIndex& index, const DrivingEnvironme
   return true;
 }
 
-
 bool overtakes(const Vehicle& v, const DrivingEnvironment& env) {
   return env.two_way() && v.driver.lane_change == LaneChangeModel::kOvertaking;
 }

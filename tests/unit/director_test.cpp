@@ -1,33 +1,26 @@
 // The event director's parts: start-time estimation, casting as an assignment, where new
-// vehicles are created, transport towards a slot, the script, and a play's phases.
+// vehicles are created, the script, and a play's phases (transport: director_transport_test).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
 #include "core_test_util.hpp"
+#include "director_test_util.hpp"
 #include "director/core/assignment.hpp"
 #include "director/core/casting.hpp"
 #include "director/core/director_core.hpp"
 #include "director/core/script.hpp"
 #include "director/core/start_time.hpp"
-#include "director/core/transport.hpp"
 
 namespace entourage::director {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using testing::at_trigger2;
+using testing::lead_play;
+using testing::vehicle;
 
-ObservedVehicle vehicle(VehicleId id, double s, double speed, int lane = 0, Direction dir = Direction::kForward) {
-  ObservedVehicle v;
-  v.id = id;
-  v.direction = dir;
-  v.lane = v.target_lane = lane;
-  v.s_m = s;
-  v.speed_mps = speed;
-  v.length_m = 4.5;
-  return v;
-}
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // --- Start-time estimation
 
@@ -85,22 +78,6 @@ TEST(Assignment, LeavesARoleUnassignedWhenThatIsCheaperOrNothingFits) {
   EXPECT_EQ((two[0] == 0) + (two[1] == 0), 1);
 }
 
-PlayConfig lead_play() {
-  PlayConfig p;
-  p.id = 1;
-  p.name = "lead";
-  p.trigger1_s_m = 2000.0;
-  p.trigger2_s_m = 3000.0;
-  PlayRoleConfig lead;
-  lead.name = "lead";
-  lead.ahead_m = 40.0;
-  lead.speed_mps = 0.0;  // the ego's speed
-  p.roles = {lead};
-  return p;
-}
-
-// Aimed at the start: the ego at trigger point 2 at `speed_mps`, a minute from now.
-Aim at_trigger2(const PlayConfig& p, double speed_mps) { return {60.0, p.trigger2_s_m, speed_mps, 0.0}; }
 
 TEST(Casting, AVehicleThatCannotReachTheSlotInTimeOrMustPassTheEgoOnOneLaneCannotPlay) {
   const PlayConfig play = lead_play();
@@ -188,161 +165,6 @@ TEST(Staging, APlayThatDoesNotFitBesideTheEgosLaneIsMirrored) {
   EXPECT_EQ(slots_of(m, Direction::kForward, 1, at_trigger2(m, 25.0), Lanes{2, 0})[0].lane, 0);
   // The middle lane of three: both sides fit, as written.
   EXPECT_EQ(staged_beside(play, 1, Lanes{3, 0}).roles[0].lane_offset, 1);
-}
-
-// --- Transport
-
-TEST(Transport, AnActorTrackingItsCommandReachesTheSlotWithinAMetreAndTheSlotSpeed) {
-  const PlayConfig play = lead_play();
-  DirectorConfig cfg;
-  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), Lanes{2, 0})[0];
-  // 840 m in 40 s, from 20 m/s to the ego's 25: cruise near 20, speed up at the end.
-  ObservedVehicle actor = vehicle(1, 2200.0, 20.0);
-  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
-  const double dt = 0.1;
-  double cmd = -1.0;
-  double max_accel = 0.0;
-  for (double t_left = 40.0; t_left > 0.0; t_left -= dt) {
-    const TransportCommand c = transport(slot, actor, t_left, cmd, dt, {}, ego, Lanes{2, 0}, cfg, cfg.transport_rate_mps2, 0.0);
-    cmd = c.speed_mps;
-    // A driver reaching its desired speed with a 2 s lag, at most 1.5 m/s^2.
-    const double a = std::clamp((cmd - actor.speed_mps) / 2.0, -1.5, 1.5);
-    max_accel = std::max(max_accel, std::abs(a));
-    actor.speed_mps += a * dt;
-    actor.s_m += actor.speed_mps * dt;
-  }
-  EXPECT_NEAR(actor.s_m, slot.s_m, 3.0);
-  EXPECT_NEAR(actor.speed_mps, slot.speed_mps, 1.0);
-  EXPECT_LE(max_accel, 1.0 + 1e-9);
-  // Too far ahead and too fast to make it: the plan says by how much it will miss.
-  const TransportCommand miss =
-      transport(slot, vehicle(2, 2300.0, 30.0), 40.0, -1.0, dt, {}, ego, Lanes{2, 0}, cfg, cfg.transport_rate_mps2, 0.0);
-  EXPECT_LT(miss.position_error_m, -20.0);
-}
-
-TEST(Transport, AnActorToSpeedUpIsGivenTheDesiredSpeedAtWhichItsFreeRoadAccelerationIsThePlansRate) {
-  // IDM's free road: a (1 - (v / v0)^4); with v0 the drive speed, that is the plan's rate.
-  const double a = 1.4;
-  const double rate = 0.7;
-  const double v = 25.0;
-  const double drive = drive_speed_mps(27.0, v, rate, a);
-  EXPECT_NEAR(a * (1.0 - std::pow(v / drive, 4.0)), rate, 1e-9);
-  EXPECT_GT(drive, 27.0);
-  // At or above the speed it should drive at, or with an unknown type: that speed itself.
-  EXPECT_DOUBLE_EQ(drive_speed_mps(25.0, 25.0, rate, a), 25.0);
-  EXPECT_DOUBLE_EQ(drive_speed_mps(24.0, 25.0, rate, a), 24.0);
-  EXPECT_DOUBLE_EQ(drive_speed_mps(27.0, v, rate, 0.0), 27.0);
-  // Close below it the plain speed is already enough: never less than it.
-  EXPECT_DOUBLE_EQ(drive_speed_mps(40.0, v, rate, a), 40.0);
-}
-
-TEST(Transport, AVehicleThatWouldStandInAClearZoneIsSentToTheNextLaneOrOutOfTheZone) {
-  PlayConfig play = lead_play();
-  play.clear = {{0, 5.0, 40.0}};
-  DirectorConfig cfg;
-  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0, 1);  // beside, in the left lane
-  // At 25 m/s for 40 s, vehicle 1 ends 20 m ahead of the ego's handover position: in the zone.
-  const ObservedVehicle v = vehicle(1, 2020.0, 25.0);
-  auto clear = [&](const ObservedVehicle& x, const PlayConfig& p, const Lanes& lanes, const EgoObservation& e) {
-    const std::vector<ZoneAtStart> zones = zones_of(p, Direction::kForward, 0, 3000.0, lanes);
-    const std::vector<int> role_lanes{0};
-    const std::vector<ObservedVehicle> world{x};
-    return clear_out(x, ClearingSituation{zones, 40.0, e, 3000.0, role_lanes, world, lanes, cfg});
-  };
-  const auto two = clear(v, play, Lanes{2, 0}, ego);
-  ASSERT_TRUE(two.has_value());
-  EXPECT_EQ(two->lane, 1);
-  // Both lanes zones: out by its speed, ahead of the zone or behind it at the start, whichever
-  // is the smaller change: behind.
-  PlayConfig both = play;
-  both.clear.push_back({1, 5.0, 40.0});
-  const auto out = clear(v, both, Lanes{2, 0}, ego);
-  ASSERT_TRUE(out.has_value());
-  EXPECT_EQ(out->lane, 0);
-  EXPECT_NEAR(v.s_m + out->speed_mps * 35.0, 3005.0 - 2.25 - 5.0, 1e-9);  // out 5 s early
-  // With the ego behind it in its lane it cannot fall behind the ego: ahead of the zone.
-  const auto ahead = clear(v, both, Lanes{2, 0}, testing::ego_at(0, 2000.0, 25.0, 0));
-  ASSERT_TRUE(ahead.has_value());
-  EXPECT_NEAR(v.s_m + ahead->speed_mps * 35.0, 3040.0 + 2.25 + 5.0, 1e-9);
-  // On one lane it would have to overtake or be overtaken: left to its own driving.
-  EXPECT_FALSE(clear(v, play, Lanes{1, 1}, ego).has_value());
-  EXPECT_FALSE(clear(vehicle(2, 2500.0, 25.0), play, Lanes{2, 0}, ego).has_value());
-}
-
-TEST(Transport, ZonesOfALaneTooCloseToStandBetweenAreClearedAsOne) {
-  const ZoneAtStart a{Direction::kForward, 1, 100.0, 120.0};
-  const ZoneAtStart b{Direction::kForward, 1, 130.0, 160.0};  // 10 m beyond a: too close
-  const ZoneAtStart c{Direction::kForward, 1, 200.0, 220.0};  // 40 m beyond b: room between
-  const ZoneAtStart other_lane{Direction::kForward, 0, 118.0, 300.0};
-  const std::vector<ZoneAtStart> zones{a, b, c, other_lane};
-  const ZoneAtStart j = joined_zone(a, zones, 14.5);
-  EXPECT_DOUBLE_EQ(j.from_s_m, 100.0);
-  EXPECT_DOUBLE_EQ(j.to_s_m, 160.0);
-  EXPECT_EQ(j.lane, 1);
-  EXPECT_DOUBLE_EQ(joined_zone(c, zones, 14.5).to_s_m, 220.0);
-  EXPECT_DOUBLE_EQ(joined_zone(c, zones, 14.5).from_s_m, 200.0);
-}
-
-TEST(Transport, AClearedVehicleAheadOfTheEgoThatCannotMakeItInTimeDrivesAtTheTopOfTheBand) {
-  const Lanes lanes{2, 0};
-  DirectorConfig cfg;
-  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0, 0);
-  // Both lanes zones from 5 to 60 m ahead at the start, 10 s from now; vehicle 1 ends 20 m ahead
-  // of the ego, in the ego's lane: it must be 47 m further ahead, 9.4 m/s faster over the 5 s
-  // planned: beyond the 8 m/s band.
-  const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 2255.0, 2310.0},
-                                       {Direction::kForward, 1, 2255.0, 2310.0}};
-  const std::vector<int> no_roles;
-  const ObservedVehicle v = vehicle(1, 2020.0, 25.0);
-  const std::vector<ObservedVehicle> alone{v};
-  const auto top = clear_out(v, ClearingSituation{zones, 10.0, ego, 2250.0, no_roles, alone, lanes, cfg});
-  ASSERT_TRUE(top.has_value());
-  EXPECT_DOUBLE_EQ(top->speed_mps, v.speed_mps + cfg.max_speed_offset_mps);
-  EXPECT_EQ(top->lane, 0);
-}
-
-// A cutter on its way: its slot in the left lane of two, 12 m ahead of the ego at the start, 40 s
-// from now; the actor 100 m behind the ego in that lane, the ego in the right lane.
-struct CutterOnItsWay : ::testing::Test {
-  DirectorConfig cfg;
-  const Lanes lanes{2, 0};
-  const Slot slot{Direction::kForward, 1, 3012.0, 26.0};
-  const ObservedVehicle actor = vehicle(1, 1900.0, 26.0, 1);
-  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0, 0);
-};
-
-TEST_F(CutterOnItsWay, AnActorHeldUpPassesOnlyByALaneInWhichItIsNotHeldUpAsWell) {
-  // A slower vehicle 50 m ahead of it in the left lane, the ego ahead of it in the right lane:
-  // passing on the right would leave it behind the ego. It stays in the slot's lane.
-  const std::vector<ObservedVehicle> world{actor, vehicle(2, 1950.0, 24.0, 1)};
-  const TransportCommand stay = transport(slot, actor, 40.0, -1.0, 0.1, world, ego, lanes, cfg, cfg.transport_rate_mps2, 0.0);
-  EXPECT_EQ(stay.lane, 1);
-  // With the ego far ahead (beyond the passing horizon), the right lane is free: it passes there.
-  const EgoObservation far_ego = testing::ego_at(0, 2600.0, 25.0, 0);
-  const TransportCommand pass = transport(slot, actor, 40.0, -1.0, 0.1, world, far_ego, lanes, cfg, cfg.transport_rate_mps2, 0.0);
-  EXPECT_EQ(pass.lane, 0);
-}
-
-TEST_F(CutterOnItsWay, AVehicleHoldingAnActorUpOnItsWayMakesWayToALaneClearOfTheZones) {
-  // The ego's lane is a zone from 3 to 60 m ahead of it at the start (40 s from now, at 3000 m).
-  const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 3003.0, 3060.0}};
-  const std::vector<int> role_lanes{1};
-  const ObservedVehicle slow = vehicle(2, 1950.0, 24.0, 1);  // ends 1910 + 1000 = 2910: behind the zone
-  const std::vector<ObservedVehicle> world{actor, slow};
-  const ClearingSituation at{zones, 40.0, ego, 3000.0, role_lanes, world, lanes, cfg};
-  const auto way = make_way(slow, slot, actor, 27.0, at);
-  ASSERT_TRUE(way.has_value());
-  EXPECT_EQ(way->lane, 0);
-  EXPECT_EQ(way->speed_mps, kOwnDesiredSpeed_mps);
-  // Not a vehicle it would move into a zone (it would end 40 m ahead of the ego in its lane) ...
-  const ObservedVehicle into_zone = vehicle(3, 2020.0, 25.5, 1);
-  EXPECT_FALSE(make_way(into_zone, slot, actor, 28.0, at).has_value());
-  // ... nor one as fast as the actor's command, one behind the actor, one beyond its horizon, or
-  // one in another lane.
-  EXPECT_FALSE(make_way(vehicle(4, 1950.0, 26.5, 1), slot, actor, 27.0, at).has_value());
-  EXPECT_FALSE(make_way(vehicle(5, 1880.0, 20.0, 1), slot, actor, 27.0, at).has_value());
-  EXPECT_FALSE(make_way(vehicle(6, 2200.0, 20.0, 1), slot, actor, 27.0, at).has_value());
-  EXPECT_FALSE(make_way(vehicle(7, 1950.0, 20.0, 0), slot, actor, 27.0, at).has_value());
 }
 
 // --- Script

@@ -329,8 +329,8 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   for (const Slot& s : slots) {
     if (s.direction == in.ego.direction) role_lanes.push_back(s.lane);
   }
-  const ClearingSituation situation{to_clear, aim.time_s,    in.ego,          aim.ego_s_m,
-                                    role_lanes, in.world, setting_.lanes, setting_.director};
+  const ClearingSituation situation{to_clear,   aim.time_s,     in.ego,           aim.ego_s_m,
+                                    role_lanes, setting_.lanes, setting_.director};
   // Vehicle i, ours from now on, is told to clear out (a cleared one keeps its last command until
   // the handover); a speed is given with the lead actors get (drive_speed_mps).
   auto clear = [&](std::size_t i, const Clearance& c) {
@@ -367,7 +367,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
     const ObservedVehicle& v = in.world[i];
     const bool ours = is_cleared(v.id);
     if (ours || !in.available[i] || v.lane != v.target_lane) continue;
-    const double s_then = v.s_m + sign(v.direction) * v.speed_mps * aim.time_s;
+    const double s_then = s_after_m(v, aim.time_s);
     const bool beside = std::any_of(zones.begin(), zones.end(), [&](const ZoneAtStart& z) {
       return z.direction == v.direction && std::abs(v.lane - z.lane) == 1 && s_then > z.from_s_m - kBesideZone_m &&
              s_then < z.to_s_m + kBesideZone_m;

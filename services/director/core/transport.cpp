@@ -30,24 +30,37 @@ int passing_lane(int lane, const Lanes& lanes, Direction dir) {
   return lane;
 }
 
+// How far ahead a vehicle in its way holds an actor up: up to its target or kHoldsUpHorizon_s at
+// its speed (or command), whichever is nearer (progress along its direction).
+double hold_up_horizon_p(const ObservedVehicle& actor, double cmd_mps, double target_p) {
+  const double p = sign(actor.direction) * actor.s_m;
+  return std::min(target_p, p + std::max(actor.speed_mps, cmd_mps) * kHoldsUpHorizon_s);
+}
+
+// Does `v` hold up an actor that must get to `target_p` in `lane`: ahead of it there, within the
+// horizon, slower than its command by kHoldsUp_mps?
+bool holds_up(const ObservedVehicle& v, Direction direction, int lane, double target_p, const ObservedVehicle& actor,
+              double cmd_mps) {
+  if (v.id == actor.id || !occupies(v, direction, lane)) return false;
+  const int dir = sign(direction);
+  const double q = dir * v.s_m;
+  return q > dir * actor.s_m && q < hold_up_horizon_p(actor, cmd_mps, target_p) && v.speed_mps < cmd_mps - kHoldsUp_mps;
+}
+
 // Is a vehicle that must get to `target_p` (progress along its direction) in `lane` held up there
-// by something it must get past (a slower vehicle ahead of it that is not beyond the target, or
-// the ego it must pass)?
+// by something it must get past (a vehicle that holds it up, or the ego it must pass)?
 bool held_up(Direction direction, int lane, double target_p, const ObservedVehicle& actor, double cmd_mps,
              const std::vector<ObservedVehicle>& world, const EgoObservation& ego) {
   const int dir = sign(direction);
   const double p = dir * actor.s_m;
   if (target_p <= p) return false;  // it falls back: followers pass it
-  const double horizon = std::min(target_p, p + std::max(actor.speed_mps, cmd_mps) * kHoldsUpHorizon_s);
   for (const ObservedVehicle& v : world) {
-    if (v.id == actor.id || !occupies(v, direction, lane)) continue;
-    const double q = dir * v.s_m;
-    if (q > p && q < horizon && v.speed_mps < cmd_mps - kHoldsUp_mps) return true;
+    if (holds_up(v, direction, lane, target_p, actor, cmd_mps)) return true;
   }
   if (occupies(ego, direction, lane)) {
     const double q = dir * ego.s_m;
     const bool passing = actor.lane != lane;  // already beside: until it is well past
-    if (q > p - (passing ? kPassedEgoBy_m : 0.0) && q < horizon) return true;
+    if (q > p - (passing ? kPassedEgoBy_m : 0.0) && q < hold_up_horizon_p(actor, cmd_mps, target_p)) return true;
   }
   return false;
 }
@@ -145,7 +158,7 @@ ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>&
 std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSituation& at) {
   const double t = std::max(at.time_left_s, 0.0);
   const int dir = sign(v.direction);
-  const double s_then = v.s_m + dir * v.speed_mps * t;
+  const double s_then = s_after_m(v, t);
   const ZoneAtStart* hit = zone_hit(at.zones, v, s_then);
   if (hit == nullptr) return std::nullopt;
   // A neighbouring lane that no zone and no role needs.
@@ -205,14 +218,9 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
 
 std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, const ObservedVehicle& actor,
                                   double actor_cmd_mps, const ClearingSituation& at) {
-  if (v.id == actor.id || v.direction != slot.direction || !occupies(v, slot.direction, slot.lane)) return std::nullopt;
   if (v.lane != v.target_lane) return std::nullopt;  // already changing lanes
-  const int dir = sign(slot.direction);
-  const double p = dir * actor.s_m;
-  const double q = dir * v.s_m;
-  const double horizon = std::min(dir * slot.s_m, p + std::max(actor.speed_mps, actor_cmd_mps) * kHoldsUpHorizon_s);
-  if (q <= p || q >= horizon || v.speed_mps >= actor_cmd_mps - kHoldsUp_mps) return std::nullopt;
-  const double s_then = v.s_m + dir * v.speed_mps * std::max(at.time_left_s, 0.0);
+  if (!holds_up(v, slot.direction, slot.lane, sign(slot.direction) * slot.s_m, actor, actor_cmd_mps)) return std::nullopt;
+  const double s_then = s_after_m(v, std::max(at.time_left_s, 0.0));
   auto clear_lane = [&](int lane) {
     if (lane < 0 || lane >= at.lanes.of(v.direction)) return false;
     if (std::find(at.role_lanes.begin(), at.role_lanes.end(), lane) != at.role_lanes.end()) return false;

@@ -77,6 +77,9 @@ inline constexpr double kSlotTimeGap_s = 1.0;
 std::vector<ZoneAtStart> slot_zones(const std::vector<Slot>& slots, const std::vector<double>& lengths_m,
                                     Direction ego_direction);
 
+// Where `v` is `t_s` from now at its present speed (road s).
+inline double s_after_m(const ObservedVehicle& v, double t_s) { return v.s_m + sign(v.direction) * v.speed_mps * t_s; }
+
 // Does a vehicle of length `length_m` with its centre at `s_m` in `lane` overlap a zone?
 bool in_zone(const ZoneAtStart& z, int lane, double s_m, double length_m);
 // The first zone `v` overlaps with its centre at `s_m` (in either lane it occupies), or nullptr.
@@ -97,7 +100,6 @@ struct ClearingSituation {
   const EgoObservation& ego;
   double ego_s_then_m = 0.0;            // where the ego is then
   const std::vector<int>& role_lanes;   // lanes of the actors of the ego's direction
-  const std::vector<ObservedVehicle>& world;
   const Lanes& lanes;
   const DirectorConfig& cfg;
 };

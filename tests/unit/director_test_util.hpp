@@ -1,0 +1,39 @@
+#pragma once
+// Helpers shared by the director's unit tests: a vehicle as the director sees it, a play with
+// one lead role, and the aim at its trigger point 2.
+
+#include "director/core/play.hpp"
+#include "director/core/stage.hpp"
+
+namespace entourage::testing {
+
+inline ObservedVehicle vehicle(VehicleId id, double s, double speed, int lane = 0, Direction dir = Direction::kForward) {
+  ObservedVehicle v;
+  v.id = id;
+  v.direction = dir;
+  v.lane = v.target_lane = lane;
+  v.s_m = s;
+  v.speed_mps = speed;
+  v.length_m = 4.5;
+  return v;
+}
+
+// A play with one role: a car 40 m ahead of the ego at its speed; trigger points at 2 and 3 km.
+inline PlayConfig lead_play() {
+  PlayConfig p;
+  p.id = 1;
+  p.name = "lead";
+  p.trigger1_s_m = 2000.0;
+  p.trigger2_s_m = 3000.0;
+  PlayRoleConfig lead;
+  lead.name = "lead";
+  lead.ahead_m = 40.0;
+  lead.speed_mps = 0.0;  // the ego's speed
+  p.roles = {lead};
+  return p;
+}
+
+// Aimed at the start: the ego at trigger point 2 at `speed_mps`, a minute from now.
+inline director::Aim at_trigger2(const PlayConfig& p, double speed_mps) { return {60.0, p.trigger2_s_m, speed_mps, 0.0}; }
+
+}  // namespace entourage::testing
