@@ -18,6 +18,7 @@ namespace entourage::testing {
 namespace {
 
 constexpr int kDomain = 114;
+constexpr std::uintmax_t kRecordedBytes = 256 * 1024;
 
 TEST(Interrupt, CtrlCStopsEverythingCleanly) {
   const std::string dir = fresh_dir("interrupt");
@@ -42,7 +43,17 @@ TEST(Interrupt, CtrlCStopsEverythingCleanly) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   ASSERT_NE(file_bytes(ego_log).find("driving"), std::string::npos) << file_bytes(dir + "/launcher.out");
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // let it record a little
+  // Let it record a little: poll until the recording holds some steps' worth of samples (it is
+  // written as they arrive; one freeway step is some 10 KB).
+  const auto recorded = [&] {
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(record, ec);
+    return !ec && size >= kRecordedBytes;
+  };
+  while (!recorded() && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  ASSERT_TRUE(recorded()) << file_bytes(dir + "/launcher.out");
   ::kill(pid, SIGINT);
   int status = 0;
   ASSERT_EQ(::waitpid(pid, &status, 0), pid);
