@@ -4,8 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
+#include <vector>
 
 #include "core/units.hpp"
 #include "road/window.hpp"
@@ -19,6 +21,10 @@ double FlowMeasurement::relative_error() const {
   return demand_veh_per_h > 0.0 ? (measured_veh_per_h - demand_veh_per_h) / demand_veh_per_h : 0.0;
 }
 
+double FlowMeasurement::relative_standard_error() const {
+  return demand_veh_per_h > 0.0 ? standard_error_veh_per_h / demand_veh_per_h : 0.0;
+}
+
 double FlowMeasurement::share_below() const {
   return headways > 0 ? static_cast<double>(headways_below) / static_cast<double>(headways) : 0.0;
 }
@@ -26,6 +32,25 @@ double FlowMeasurement::share_below() const {
 double FlowMeasurement::platoon_size(double share_below) {
   return share_below < 1.0 ? 1.0 / (1.0 - share_below) : std::numeric_limits<double>::infinity();
 }
+
+namespace {
+// The standard error of a rate from batches of counts over observation times: the spread of the
+// batches' rates (those observed at all) over the root of their number.
+double batch_means_error(const std::vector<double>& counts, const std::vector<double>& observed_s) {
+  std::vector<double> rates;
+  for (std::size_t b = 0; b < counts.size(); ++b) {
+    if (observed_s[b] > 0.0) rates.push_back(counts[b] / observed_s[b]);
+  }
+  if (rates.size() < 2) return 0.0;
+  double mean = 0.0;
+  for (double r : rates) mean += r;
+  mean /= static_cast<double>(rates.size());
+  double var = 0.0;
+  for (double r : rates) var += (r - mean) * (r - mean);
+  var /= static_cast<double>(rates.size() - 1);
+  return std::sqrt(var / static_cast<double>(rates.size()));
+}
+}  // namespace
 
 FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int direction, double spacing) {
   FlowMeasurement f;
@@ -38,24 +63,47 @@ FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int dire
   std::unordered_map<std::uint64_t, const EgoRow*> ego_at;
   for (const auto& e : t.ego) ego_at[e.step] = &e;
   std::unordered_map<std::uint32_t, double> last_s;
-  std::unordered_set<std::uint32_t> counted;
+  std::unordered_map<std::uint32_t, std::uint64_t> counted;  // crossings per vehicle
+  // Batches by step, over the ego's steps.
+  const std::uint64_t first_step = t.ego.empty() ? 0 : t.ego.front().step;
+  const std::uint64_t span = t.ego.empty() ? 1 : std::max<std::uint64_t>(1, t.ego.back().step - first_step + 1);
+  std::vector<double> batch_crossings(kFlowBatches, 0.0);
+  std::vector<double> batch_observed_s(kFlowBatches, 0.0);
+  auto batch_of = [&](std::uint64_t step) {
+    const std::uint64_t b = (step - std::min(step, first_step)) * kFlowBatches / span;
+    return static_cast<std::size_t>(std::min<std::uint64_t>(b, kFlowBatches - 1));
+  };
+  // The detectors inside the window at both ends of step k (first to last, in detector numbers),
+  // if any.
+  auto detectors_at = [&](std::uint64_t step) -> std::optional<std::pair<double, double>> {
+    auto now = ego_at.find(step);
+    auto before = step > 0 ? ego_at.find(step - 1) : ego_at.end();
+    if (now == ego_at.end() || before == ego_at.end()) return std::nullopt;
+    const WindowBounds w0 = WindowBounds::around(before->second->s_m, sc.window);
+    const WindowBounds w1 = WindowBounds::around(now->second->s_m, sc.window);
+    const double first = std::ceil(std::max(w0.rear_edge_m, w1.rear_edge_m) / spacing);
+    const double last = std::floor(std::min(w0.front_edge_m, w1.front_edge_m) / spacing);
+    if (last < first) return std::nullopt;
+    return std::make_pair(first, last);
+  };
+  // Every step of the ego's observes, whether or not a vehicle is about.
+  for (const EgoRow& e : t.ego) {
+    if (const auto d = detectors_at(e.step)) {
+      const double detector_s = (d->second - d->first + 1.0) * sc.step_s;
+      f.observed_s += detector_s;
+      batch_observed_s[batch_of(e.step)] += detector_s;
+    }
+  }
   std::unordered_map<std::uint32_t, std::uint64_t> last_step;
   std::size_t i = 0;
   while (i < t.vehicles.size()) {
     const std::uint64_t step = t.vehicles[i].step;
     std::size_t j = i;
     while (j < t.vehicles.size() && t.vehicles[j].step == step) ++j;
-    auto now = ego_at.find(step);
-    auto before = step > 0 ? ego_at.find(step - 1) : ego_at.end();
-    if (now != ego_at.end() && before != ego_at.end()) {
-      const WindowBounds w0 = WindowBounds::around(before->second->s_m, sc.window);
-      const WindowBounds w1 = WindowBounds::around(now->second->s_m, sc.window);
-      const double lo = std::max(w0.rear_edge_m, w1.rear_edge_m);
-      const double hi = std::min(w0.front_edge_m, w1.front_edge_m);
-      const double first = std::ceil(lo / spacing);
-      const double last = std::floor(hi / spacing);
-      if (last >= first) {
-        f.observed_s += (last - first + 1.0) * sc.step_s;
+    if (const auto d = detectors_at(step)) {
+      const auto [first, last] = *d;
+      {
+        const std::size_t batch = batch_of(step);
         for (std::size_t k = i; k < j; ++k) {
           const VehicleRow& r = t.vehicles[k];
           if (r.direction != direction) continue;
@@ -68,7 +116,8 @@ FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int dire
           const double to = std::min(last, direction > 0 ? std::floor(b / spacing) : std::ceil(b / spacing) - 1.0);
           if (to >= from) {
             f.crossings += static_cast<std::uint64_t>(to - from + 1.0);
-            counted.insert(r.id);
+            counted[r.id] += static_cast<std::uint64_t>(to - from + 1.0);
+            batch_crossings[batch] += to - from + 1.0;
             if (r.lane < own_lanes) {
               for (double x = from; x <= to; x += 1.0) {
                 auto [at, fresh] = last_crossing.try_emplace({static_cast<std::int64_t>(x), r.lane}, step);
@@ -90,7 +139,13 @@ FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int dire
     i = j;
   }
   f.vehicles = counted.size();
-  if (f.observed_s > 0.0) f.measured_veh_per_h = per_second_to_per_hour(static_cast<double>(f.crossings) / f.observed_s);
+  if (f.observed_s > 0.0) {
+    f.measured_veh_per_h = per_second_to_per_hour(static_cast<double>(f.crossings) / f.observed_s);
+    double squares = 0.0;
+    for (const auto& [id, c] : counted) squares += static_cast<double>(c) * static_cast<double>(c);
+    const double by_vehicles = std::sqrt(squares) / f.observed_s;
+    f.standard_error_veh_per_h = per_second_to_per_hour(std::max(by_vehicles, batch_means_error(batch_crossings, batch_observed_s)));
+  }
   return f;
 }
 

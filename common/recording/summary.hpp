@@ -9,6 +9,14 @@
 // detectors. In the ego's own direction a window sees few vehicles come and go (they travel at
 // about its speed), so over a few minutes this figure varies by ten or twenty percent from run to
 // run as real traffic does; `vehicles` says how many distinct vehicles it rests on.
+//
+// Its standard error says how far a run's figure may lie from the demand by chance alone: the
+// larger of two estimates, since counts of traffic are clustered. (a) Vehicles: each vehicle
+// crosses many detectors, so the count is a compound of vehicles arriving independently,
+// Var = sum of c_i^2 over the vehicles' crossings c_i. (b) Batch means: the drive cut into
+// kFlowBatches periods of equal length, the spread of their flows over sqrt(kFlowBatches); it
+// takes in platoons, which (a) counts as independent vehicles. Both assume the periods and
+// vehicles independent, so they are lower bounds where one platoon travels with the ego for long.
 
 #include <cstdint>
 #include <map>
@@ -35,11 +43,17 @@ struct FlowMeasurement {
   std::uint64_t headways_below = 0;
   double source_share_below = 0.0;
 
+  double standard_error_veh_per_h = 0.0;  // of measured_veh_per_h
+
   double relative_error() const;  // (measured - demand) / demand; 0 if no demand
+  double relative_standard_error() const;  // standard error / demand; 0 if no demand
   double share_below() const;     // headways_below / headways; 0 without headways
   // Mean platoon size (leader included) from a share of following vehicles: 1 / (1 - share).
   static double platoon_size(double share_below);
 };
+
+// Periods a drive is cut into for the batch-means standard error of its flows.
+inline constexpr int kFlowBatches = 10;
 
 // A vehicle less than this behind the one ahead in its lane drives in its platoon.
 inline constexpr double kPlatoonHeadway_s = 3.0;

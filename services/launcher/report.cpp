@@ -1,6 +1,7 @@
 #include "launcher/report.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <tuple>
@@ -44,7 +45,7 @@ void print_flow(const char* what, const recording::FlowMeasurement& f, std::ostr
   if (f.demand_veh_per_h <= 0.0 && f.crossings == 0) return;
   out << "  flow " << what << ": " << f1(f.measured_veh_per_h) << " veh/h measured in the window against a demand of "
       << f1(f.demand_veh_per_h) << " veh/h (" << (f.relative_error() >= 0 ? "+" : "") << f1(100.0 * f.relative_error())
-      << " %; " << f.vehicles << " vehicles, " << f.crossings << " detector crossings in " << f1(f.observed_s / 3600.0)
+      << " % ± " << f1(100.0 * f.relative_standard_error()) << " %; " << f.vehicles << " vehicles, " << f.crossings << " detector crossings in " << f1(f.observed_s / 3600.0)
       << " detector-hours)\n";
 }
 
@@ -86,10 +87,12 @@ bool print_report(const ReportInput& in, const recording::Tables& tables, std::o
   const auto ratio = [](std::uint64_t n, double expected) {
     return expected > 0.0 ? f2(static_cast<double>(n) / expected) : std::string("-");
   };
-  out << "  catch-ups against the moving-observer prediction: passive " << pe.overtaking << " / " << f1(pp.overtaking)
-      << " (" << ratio(pe.overtaking, pp.overtaking) << "), active " << pe.overtaken << " / " << f1(pp.overtaken)
-      << " (" << ratio(pe.overtaken, pp.overtaken) << "), oncoming met " << pe.met << " / " << f1(pp.met) << " ("
-      << ratio(pe.met, pp.met) << ")\n";
+  // A count's chance spread: Poisson's root of the prediction (at least: platoons pass together).
+  const auto predicted = [](double expected) { return f1(expected) + " ± " + f1(std::sqrt(std::max(expected, 0.0))); };
+  out << "  catch-ups against the moving-observer prediction: passive " << pe.overtaking << " / "
+      << predicted(pp.overtaking) << " (" << ratio(pe.overtaking, pp.overtaking) << "), active " << pe.overtaken
+      << " / " << predicted(pp.overtaken) << " (" << ratio(pe.overtaken, pp.overtaken) << "), oncoming met " << pe.met
+      << " / " << predicted(pp.met) << " (" << ratio(pe.met, pp.met) << ")\n";
   for (const auto& [name, f, lanes] :
        {std::tuple<const char*, const recording::FlowMeasurement&, int>{"forward", s.forward, in.scenario.road.lanes_forward},
         {"backward", s.backward, in.scenario.road.lanes_backward}}) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -318,6 +319,60 @@ TEST(PastTheEgoPrediction, FasterEgosOvertakeMoreAndAreOvertakenLess) {
   EXPECT_GT(slow.overtaking, fast.overtaking);
   EXPECT_LT(slow.overtaken, fast.overtaken);
   EXPECT_LT(slow.met, fast.met);
+}
+
+}  // namespace
+}  // namespace entourage::recording
+
+// The flow's standard error: vehicles arriving evenly give the compound-count estimate (each
+// vehicle crossing every detector once, n vehicles: the flow over sqrt(n)); the same vehicles
+// bunched into the first third of the drive give the batch means' larger one.
+namespace entourage::recording {
+namespace {
+
+constexpr double kEgo_m = 5000.0;
+constexpr double kSpeed_mps = 30.0;
+constexpr int kSteps = 6000;
+constexpr int kVehicles = 20;
+
+Tables standing_ego_passed_by(int entry_every_steps) {
+  const ScenarioConfig sc = entourage::testing::freeway_scenario();
+  Tables t = ego_driving(0.0, kSteps);
+  for (auto& e : t.ego) e.s_m = kEgo_m;
+  const double from = kEgo_m - sc.window.inner_behind_m - sc.window.outer_behind_m - 20.0;
+  const double to = kEgo_m + sc.window.inner_ahead_m + sc.window.outer_ahead_m + 20.0;
+  for (int i = 0; i < kVehicles; ++i) {
+    const int entry = i * entry_every_steps;
+    for (int k = entry; k < kSteps; ++k) {
+      VehicleRow r;
+      r.step = static_cast<std::uint64_t>(k);
+      r.id = static_cast<std::uint32_t>(i + 1);
+      r.s_m = from + kSpeed_mps * sc.step_s * (k - entry);
+      if (r.s_m > to) break;
+      r.speed_mps = kSpeed_mps;
+      t.vehicles.push_back(r);
+    }
+  }
+  std::stable_sort(t.vehicles.begin(), t.vehicles.end(),
+                   [](const VehicleRow& a, const VehicleRow& b) { return a.step < b.step; });
+  return t;
+}
+
+TEST(FlowError, EvenArrivalsGiveTheCompoundCountError) {
+  const ScenarioConfig sc = entourage::testing::freeway_scenario();
+  const FlowMeasurement f = measure_flow(standing_ego_passed_by(250), sc, 1, 25.0);
+  const double drive_h = kSteps * sc.step_s / 3600.0;
+  EXPECT_NEAR(f.measured_veh_per_h, kVehicles / drive_h, 1.0);
+  EXPECT_NEAR(f.standard_error_veh_per_h, f.measured_veh_per_h / std::sqrt(kVehicles), 1.0);
+  EXPECT_EQ(f.vehicles, static_cast<std::uint64_t>(kVehicles));
+}
+
+TEST(FlowError, BunchedArrivalsGiveTheBatchMeansLargerError) {
+  const ScenarioConfig sc = entourage::testing::freeway_scenario();
+  const FlowMeasurement even = measure_flow(standing_ego_passed_by(250), sc, 1, 25.0);
+  const FlowMeasurement bunched = measure_flow(standing_ego_passed_by(60), sc, 1, 25.0);
+  EXPECT_NEAR(bunched.measured_veh_per_h, even.measured_veh_per_h, 1.0);
+  EXPECT_GT(bunched.standard_error_veh_per_h, 1.3 * even.standard_error_veh_per_h);
 }
 
 }  // namespace
