@@ -406,4 +406,17 @@ std::optional<std::string> check(const msg::ActorCommand& m, const SampleLimits&
   return check_control(m, limits);
 }
 
+std::optional<std::string> check(const msg::PlayStatus& m, const SampleLimits& /*limits*/) {
+  for (double x : {m.time_s(), m.ego_s_m(), m.trigger1_s_m(), m.trigger2_s_m(), m.estimated_start_time_s(),
+                   m.position_error_m(), m.speed_error_mps()}) {
+    if (!std::isfinite(x)) return "a value is not finite";
+  }
+  if (m.phase() >= kPlayPhases) return "unknown play phase " + std::to_string(m.phase());
+  if (m.position_error_m() < 0.0 || m.speed_error_mps() < 0.0) return "a negative error (errors are magnitudes)";
+  if (m.estimated_start_time_s() < 0.0 && m.estimated_start_time_s() != -1.0) {
+    return "estimated start time " + std::to_string(m.estimated_start_time_s()) + " (a time, or -1 for unknown)";
+  }
+  return std::nullopt;
+}
+
 }  // namespace entourage::dds

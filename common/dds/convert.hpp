@@ -54,5 +54,8 @@ std::optional<std::string> check(const msg::EgoState& m, const SampleLimits& lim
 std::optional<std::string> check(const msg::VehicleState& m, const SampleLimits& limits);
 std::optional<std::string> check(const msg::Handoff& m, const SampleLimits& limits);
 std::optional<std::string> check(const msg::ActorCommand& m, const SampleLimits& limits);
+// PlayStatus.phase runs from 0 (waiting) to 7 (failed): idl/PlayStatus.idl, the director's PlayPhase.
+inline constexpr std::uint8_t kPlayPhases = 8;
+std::optional<std::string> check(const msg::PlayStatus& m, const SampleLimits& limits);
 
 }  // namespace entourage::dds

@@ -54,8 +54,8 @@ void Inbox::add(const msg::PlayStatus& m) {
   const ServiceId from{Role::kDirector, 0};
   if (from == self_) return;
   std::lock_guard<std::mutex> lock(mutex_);
-  buckets_[m.step()].plays.push_back(m);
-  ledger_.on_sample(from, m.step(), Topic::kPlayStatus);
+  ledger_.on_sample(from, m.step(), Topic::kPlayStatus);  // arrived, even if refused
+  if (!refuse(check(m, limits_), "play_status", m.play_id(), m.step())) buckets_[m.step()].plays.push_back(m);
   changed_.notify_all();
 }
 

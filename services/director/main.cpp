@@ -11,6 +11,9 @@
 namespace entourage {
 namespace {
 
+static_assert(static_cast<int>(director::PlayPhase::kFailed) + 1 == dds::kPlayPhases,
+              "PlayStatus.phase: the director's phases and what its readers accept");
+
 msg::PlayStatus to_msg(const director::PlayReport& r, Step k, double time_s) {
   msg::PlayStatus m;
   m.play_id(r.play_id);

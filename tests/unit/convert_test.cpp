@@ -324,3 +324,41 @@ TEST(Convert, StepDoneCountsRoundTrip) {
 
 }  // namespace
 }  // namespace entourage::dds
+
+namespace entourage::dds {
+namespace {
+
+using testing::limits;
+
+TEST(Convert, BadPlayStatusIsRefusedWithAReason) {
+  msg::PlayStatus good;
+  good.play_id(1);
+  good.step(300);
+  good.time_s(30.0);
+  good.phase(3);
+  good.ego_s_m(3200.0);
+  good.trigger1_s_m(3000.0);
+  good.trigger2_s_m(5000.0);
+  good.estimated_start_time_s(95.0);
+  good.position_error_m(12.0);
+  good.speed_error_mps(1.5);
+  auto reason = [](const msg::PlayStatus& m) { return check(m, limits()).value_or("accepted"); };
+  EXPECT_EQ(reason(good), "accepted");
+  msg::PlayStatus m = good;
+  m.phase(kPlayPhases);
+  EXPECT_EQ(reason(m), "unknown play phase 8");
+  m = good;
+  m.ego_s_m(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_NE(reason(m).find("not finite"), std::string::npos);
+  m = good;
+  m.position_error_m(-1.0);
+  EXPECT_NE(reason(m).find("negative error"), std::string::npos);
+  m = good;
+  m.estimated_start_time_s(-1.0);  // unknown
+  EXPECT_EQ(reason(m), "accepted");
+  m.estimated_start_time_s(-3.0);
+  EXPECT_NE(reason(m).find("estimated start time"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace entourage::dds
