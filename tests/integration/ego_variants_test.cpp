@@ -1,10 +1,12 @@
 // The moving window around egos that do what a test person may do: stop in the lane for a minute,
 // drive at 180 km/h, keep well below the stream's speed (the shipped scenarios
-// freeway_ego_stops, freeway_ego_fast, freeway_ego_slow), each end to end with every service a
-// process over DDS. Every invariant holds (no vehicle appears or disappears in the inner region,
+// freeway_ego_stops, freeway_ego_fast, freeway_ego_slow), and on the rural road drive below the
+// stream or above it, overtaking in the oncoming lane (rural_ego_slow, rural_ego_fast), each end
+// to end with every service a process over DDS. Every invariant holds (no vehicle appears or disappears in the inner region,
 // none overlaps another), and the ego really did what the scenario says.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <functional>
 #include <ostream>
@@ -44,6 +46,22 @@ void below_the_stream(const std::vector<recording::EgoRow>& ego) {
   EXPECT_LT(sum / static_cast<double>(ego.size()), 85.0 / 3.6);
 }
 
+double mean_kph(const std::vector<recording::EgoRow>& ego) {
+  double sum = 0.0;
+  for (const auto& e : ego) sum += e.speed_mps;
+  return 3.6 * sum / static_cast<double>(ego.size());
+}
+
+// The rural stream's space-mean speed is about 80 km/h (the generator's log).
+void below_the_rural_stream(const std::vector<recording::EgoRow>& ego) { EXPECT_LT(mean_kph(ego), 70.0); }
+
+void overtakes_on_the_rural_road(const std::vector<recording::EgoRow>& ego) {
+  EXPECT_GT(mean_kph(ego), 80.0);
+  const bool in_the_oncoming_lane =
+      std::any_of(ego.begin(), ego.end(), [](const recording::EgoRow& e) { return e.lane >= 1; });
+  EXPECT_TRUE(in_the_oncoming_lane) << "it never overtook";
+}
+
 class EgoVariant : public ::testing::TestWithParam<Variant> {};
 
 TEST_P(EgoVariant, TheWindowKeepsEveryInvariant) {
@@ -66,7 +84,9 @@ TEST_P(EgoVariant, TheWindowKeepsEveryInvariant) {
 INSTANTIATE_TEST_SUITE_P(Scenarios, EgoVariant,
                          ::testing::Values(Variant{"freeway_ego_stops", 140, stood_for_a_minute},
                                            Variant{"freeway_ego_fast", 141, mostly_near_180},
-                                           Variant{"freeway_ego_slow", 142, below_the_stream}),
+                                           Variant{"freeway_ego_slow", 142, below_the_stream},
+                                           Variant{"rural_ego_slow", 147, below_the_rural_stream},
+                                           Variant{"rural_ego_fast", 148, overtakes_on_the_rural_road}),
                          [](const ::testing::TestParamInfo<Variant>& p) { return p.param.scenario; });
 
 }  // namespace
