@@ -188,8 +188,11 @@ PastTheEgo measure_past_ego(const Tables& t, const ScenarioConfig& sc) {
 PastTheEgoPrediction predict_past_ego(const Tables& t, const ScenarioConfig& sc) {
   PastTheEgoPrediction p;
   if (t.ego.size() < 2) return p;
-  const ObservedStream forward(sc, Direction::kForward, StreamObservation{}, sc.seed);
-  const ObservedStream backward(sc, Direction::kBackward, StreamObservation{}, sc.seed);
+  // The streams the run's generator observed (the run's seed is in the recording's info).
+  const std::uint64_t seed = generator_seed(t.info.seed);
+  const ObservedStream forward(sc, Direction::kForward, StreamObservation{}, observation_seed(seed, Direction::kForward));
+  const ObservedStream backward(sc, Direction::kBackward, StreamObservation{},
+                                observation_seed(seed, Direction::kBackward));
   for (const auto& e : t.ego) {
     const double u = std::max(0.0, e.speed_mps);
     p.overtaking += forward.vehicles_rear_per_s(u) * sc.step_s;

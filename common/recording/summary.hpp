@@ -74,7 +74,8 @@ struct PastTheEgo {
 };
 
 // What the moving-observer relations predict for the same drive: the catch-up rates of the
-// demand's stream (as the generator observes it, traffic/observed_stream.hpp) at the ego's speed,
+// demand's stream (as the run's generator observed it, with the seeds it derives from the run's
+// seed in t.info: traffic/observed_stream.hpp) at the ego's speed,
 // integrated over the ego's speed history: passive k E[(v - u)+], active k E[(u - v)+], oncoming
 // met k_o E[v + u], each in vehicles per second.
 struct PastTheEgoPrediction {

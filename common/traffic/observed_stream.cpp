@@ -3,9 +3,22 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/ids.hpp"
 #include "traffic/road_sim.hpp"
 
 namespace entourage {
+
+namespace {
+constexpr std::uint64_t kObservationLabel = 0x6f62736572766500ULL;
+}  // namespace
+
+std::uint64_t generator_seed(std::uint64_t run_seed) {
+  return Random::derived(run_seed, static_cast<std::uint64_t>(Role::kGenerator)).next_u64();
+}
+
+std::uint64_t observation_seed(std::uint64_t generator_seed, Direction dir) {
+  return Random::derived(generator_seed, kObservationLabel + (dir == Direction::kForward ? 0 : 1)).next_u64();
+}
 
 namespace {
 

@@ -13,7 +13,7 @@ int run(const dds::ServiceContext& ctx) {
   dds::Shell shell(ctx);
   dds::RegionPublisher publisher(shell.node, ctx.id, road, dds::SampleLimits::of(sc));
   // Observing the demand's stream takes a second or two: done before reporting ready.
-  generator::GeneratorCore core(sc, Random::derived(ctx.seed, static_cast<std::uint64_t>(Role::kGenerator)).next_u64());
+  generator::GeneratorCore core(sc, generator_seed(ctx.seed));
   for (Direction d : {Direction::kForward, Direction::kBackward}) {
     const ObservedStream& st = core.stream(d);
     if (st.empty()) continue;
@@ -44,6 +44,10 @@ int run(const dds::ServiceContext& ctx) {
                "oncoming {}/{}/{}",
                c.arrivals_at[0], c.members_at[0], c.placed_at[0], c.arrivals_at[1], c.members_at[1], c.placed_at[1],
                c.arrivals_at[2], c.members_at[2], c.placed_at[2]);
+  spdlog::info("platoons expected at the moving-observer rates / after the regulation: from behind {:.1f}/{:.1f}, "
+               "from ahead {:.1f}/{:.1f}, oncoming {:.1f}/{:.1f}",
+               c.expected_plain_at[0], c.expected_regulated_at[0], c.expected_plain_at[1], c.expected_regulated_at[1],
+               c.expected_plain_at[2], c.expected_regulated_at[2]);
   return 0;
 }
 

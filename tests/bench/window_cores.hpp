@@ -30,11 +30,6 @@ inline constexpr ServiceId kGeneratorService{Role::kGenerator, 0};
 inline constexpr ServiceId kMicroService{Role::kMicro, 0};
 inline constexpr ServiceId kMesoService{Role::kMeso, kMesoBoth};
 
-// The generator's seed from the run's, as services/generator/main.cpp derives it.
-inline std::uint64_t generator_seed(std::uint64_t run_seed) {
-  return Random::derived(run_seed, static_cast<std::uint64_t>(Role::kGenerator)).next_u64();
-}
-
 // A vehicle state, a handoff and a command as their receivers get them: through the messages
 // the DDS shells send (common/dds/convert.cpp), so whatever a message does not carry is lost here
 // too (e.g. the overtaking state and the HDM's memory of a handed-over vehicle).

@@ -73,6 +73,18 @@ TEST(Generator, TheObservedStreamIsSlowerThanItsDriversWishAndCarriesTheDemand) 
   EXPECT_GT(trucks_behind, 0.0);  // platoons exist
 }
 
+TEST(Generator, ObservesItsStreamsWithTheSeedsARecordingsReaderDerives) {
+  const ScenarioConfig sc = freeway_scenario();
+  const std::uint64_t run_seed = 7;
+  const GeneratorCore g(sc, generator_seed(run_seed));
+  for (Direction d : {Direction::kForward, Direction::kBackward}) {
+    const ObservedStream same(sc, d, StreamObservation{}, observation_seed(generator_seed(run_seed), d));
+    EXPECT_EQ(g.stream(d).platoons().size(), same.platoons().size());
+    EXPECT_EQ(g.stream(d).density_per_m(), same.density_per_m());
+    EXPECT_EQ(g.stream(d).mean_speed_mps(), same.mean_speed_mps());
+  }
+}
+
 // Without regulation (nothing else moves here, so the window would look empty to it).
 ScenarioConfig unregulated() {
   ScenarioConfig sc = freeway_scenario();

@@ -13,6 +13,7 @@
 #include "recording/checks.hpp"
 #include "recording/csv_tables.hpp"
 #include "recording/summary.hpp"
+#include "traffic/observed_stream.hpp"
 #include "recording/recording.hpp"
 #include "recording/tables.hpp"
 
@@ -310,6 +311,24 @@ TEST(PastTheEgoPrediction, AStandingEgoIsPassedByTheWholeFlow) {
   EXPECT_NEAR(p.overtaking, sc.forward.flow_veh_per_s * seconds, 1e-6 * sc.forward.flow_veh_per_s * seconds + 1.0);
   EXPECT_EQ(p.overtaken, 0.0);
   EXPECT_NEAR(p.met, sc.backward.flow_veh_per_s * seconds, 0.01 * sc.backward.flow_veh_per_s * seconds);
+}
+
+TEST(PastTheEgoPrediction, UsesTheStreamTheRunsGeneratorObserved) {
+  // The run's seed is in the recording; the prediction observes with the generator's seeds.
+  const ScenarioConfig sc = entourage::testing::freeway_scenario();
+  const int steps = 6000;
+  const double u = 25.0;
+  Tables t = ego_driving(u, steps);
+  t.info.seed = 7;
+  const auto p = predict_past_ego(t, sc);
+  const std::uint64_t seed = generator_seed(7);
+  const ObservedStream forward(sc, Direction::kForward, StreamObservation{}, observation_seed(seed, Direction::kForward));
+  const ObservedStream backward(sc, Direction::kBackward, StreamObservation{},
+                                observation_seed(seed, Direction::kBackward));
+  const double seconds = steps * sc.step_s;
+  EXPECT_NEAR(p.overtaking, forward.vehicles_rear_per_s(u) * seconds, 1e-6 * p.overtaking);
+  EXPECT_NEAR(p.overtaken, forward.vehicles_front_per_s(u) * seconds, 1e-6 * p.overtaken);
+  EXPECT_NEAR(p.met, backward.vehicles_oncoming_per_s(u) * seconds, 1e-6 * p.met);
 }
 
 TEST(PastTheEgoPrediction, FasterEgosOvertakeMoreAndAreOvertakenLess) {

@@ -10,17 +10,16 @@ namespace entourage::generator {
 
 namespace {
 constexpr ServiceId kSelf{Role::kGenerator, 0};
-// Seed labels: each driver's own stream (with its vehicle id) and the stream observations.
+// Seed label of each driver's own stream (with its vehicle id); the stream observations' seeds:
+// observation_seed (traffic/observed_stream.hpp).
 constexpr std::uint64_t kDriverStreamLabel = 0x6472697665720000ULL;
-constexpr std::uint64_t kObservationLabel = 0x6f62736572766500ULL;
 // How long the generator remembers a birth the world does not show yet.
 constexpr Step kBirthMemorySteps = 20;
 
 double edge_position(Edge e, const WindowBounds& w) { return e == Edge::kRear ? w.rear_edge_m : w.front_edge_m; }
 
 ObservedStream observe(const ScenarioConfig& sc, Direction dir, const GeneratorConfig& config, std::uint64_t seed) {
-  const std::uint64_t label = kObservationLabel + (dir == Direction::kForward ? 0 : 1);
-  return ObservedStream(sc, dir, config.observation, Random::derived(seed, label).next_u64());
+  return ObservedStream(sc, dir, config.observation, observation_seed(seed, dir));
 }
 }  // namespace
 
@@ -220,7 +219,11 @@ void GeneratorCore::arrive(const StepInput& in) {
   for (EdgeStream& s : edges_) {
     const ObservedStream& stream = this->stream(s.dir);
     if (stream.empty()) continue;
-    s.accumulated += rate(s, u) * regulated[dir_index(s.dir)] * scenario_.step_s;
+    const double plain = rate(s, u) * scenario_.step_s;
+    const double hazard = plain * regulated[dir_index(s.dir)];
+    counters_.expected_plain_at[static_cast<std::size_t>(s.entrance)] += plain;
+    counters_.expected_regulated_at[static_cast<std::size_t>(s.entrance)] += hazard;
+    s.accumulated += hazard;
     while (s.accumulated >= s.next) {
       s.accumulated -= s.next;
       s.next = rng_.exponential(1.0);
