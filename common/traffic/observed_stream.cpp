@@ -82,12 +82,13 @@ ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, co
     snapshots_.push_back(std::move(snap));
   }
   const double observed_length = sampled_length_m_ * static_cast<double>(snapshots_.size());
-  vehicle_density_ = static_cast<double>(vehicles) / observed_length;
   double carried = 0.0;  // sum over platoons of size x speed
   for (const auto& p : platoons_) carried += static_cast<double>(p.members.size()) * p.speed_mps;
-  const double observed_flow = carried / observed_length;
-  platoon_density_ = static_cast<double>(platoons_.size()) / observed_length *
-                     (observed_flow > 0.0 ? flow_ / observed_flow : 1.0);
+  sample_flow_ = carried / observed_length;
+  // Vehicles and platoons alike: the stream that carries the demand has this many per metre.
+  const double scale = sample_flow_ > 0.0 ? flow_ / sample_flow_ : 1.0;
+  vehicle_density_ = static_cast<double>(vehicles) / observed_length * scale;
+  platoon_density_ = static_cast<double>(platoons_.size()) / observed_length * scale;
 }
 
 double ObservedStream::mean_speed_mps() const {

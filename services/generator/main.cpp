@@ -17,8 +17,9 @@ int run(const dds::ServiceContext& ctx) {
   for (Direction d : {Direction::kForward, Direction::kBackward}) {
     const ObservedStream& st = core.stream(d);
     if (st.empty()) continue;
-    spdlog::info("stream {}: {:.0f} veh/h, density {:.2f} veh/km, space-mean speed {:.1f} km/h, {} platoons observed",
-                 to_string(d), st.flow_veh_per_s() * 3600.0,
+    spdlog::info("stream {}: {:.0f} veh/h (the snapshots carried {:.0f}), density {:.2f} veh/km, space-mean speed "
+                 "{:.1f} km/h, {} platoons observed",
+                 to_string(d), st.flow_veh_per_s() * 3600.0, st.sample_flow_per_s() * 3600.0,
                  st.density_per_m() * 1000.0, st.mean_speed_mps() * 3.6, st.platoons().size());
   }
   if (!shell.discover(ctx)) return 1;
