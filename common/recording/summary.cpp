@@ -102,32 +102,29 @@ FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int dire
     while (j < t.vehicles.size() && t.vehicles[j].step == step) ++j;
     if (const auto d = detectors_at(step)) {
       const auto [first, last] = *d;
-      {
-        const std::size_t batch = batch_of(step);
-        for (std::size_t k = i; k < j; ++k) {
-          const VehicleRow& r = t.vehicles[k];
-          if (r.direction != direction) continue;
-          auto it = last_s.find(r.id);
-          if (it == last_s.end() || last_step[r.id] + 1 != step) continue;
-          const double a = std::min(it->second, r.s_m);
-          const double b = std::max(it->second, r.s_m);
-          // detectors x with a < x <= b (forward) or a <= x < b (backward), within [lo, hi]
-          const double from = std::max(first, direction > 0 ? std::floor(a / spacing) + 1.0 : std::ceil(a / spacing));
-          const double to = std::min(last, direction > 0 ? std::floor(b / spacing) : std::ceil(b / spacing) - 1.0);
-          if (to >= from) {
-            f.crossings += static_cast<std::uint64_t>(to - from + 1.0);
-            counted[r.id] += static_cast<std::uint64_t>(to - from + 1.0);
-            batch_crossings[batch] += to - from + 1.0;
-            if (r.lane < own_lanes) {
-              for (double x = from; x <= to; x += 1.0) {
-                auto [at, fresh] = last_crossing.try_emplace({static_cast<std::int64_t>(x), r.lane}, step);
-                if (!fresh) {
-                  ++f.headways;
-                  if (static_cast<double>(step - at->second) * sc.step_s < kPlatoonHeadway_s) ++f.headways_below;
-                  at->second = step;
-                }
-              }
-            }
+      const std::size_t batch = batch_of(step);
+      for (std::size_t k = i; k < j; ++k) {
+        const VehicleRow& r = t.vehicles[k];
+        if (r.direction != direction) continue;
+        auto it = last_s.find(r.id);
+        if (it == last_s.end() || last_step[r.id] + 1 != step) continue;
+        const double a = std::min(it->second, r.s_m);
+        const double b = std::max(it->second, r.s_m);
+        // detectors x with a < x <= b (forward) or a <= x < b (backward), among those in the window
+        const double from = std::max(first, direction > 0 ? std::floor(a / spacing) + 1.0 : std::ceil(a / spacing));
+        const double to = std::min(last, direction > 0 ? std::floor(b / spacing) : std::ceil(b / spacing) - 1.0);
+        if (to < from) continue;
+        const auto crossed = static_cast<std::uint64_t>(to - from + 1.0);
+        f.crossings += crossed;
+        counted[r.id] += crossed;
+        batch_crossings[batch] += static_cast<double>(crossed);
+        if (r.lane >= own_lanes) continue;
+        for (double x = from; x <= to; x += 1.0) {
+          auto [at, fresh] = last_crossing.try_emplace({static_cast<std::int64_t>(x), r.lane}, step);
+          if (!fresh) {
+            ++f.headways;
+            if (static_cast<double>(step - at->second) * sc.step_s < kPlatoonHeadway_s) ++f.headways_below;
+            at->second = step;
           }
         }
       }
@@ -144,7 +141,8 @@ FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int dire
     double squares = 0.0;
     for (const auto& [id, c] : counted) squares += static_cast<double>(c) * static_cast<double>(c);
     const double by_vehicles = std::sqrt(squares) / f.observed_s;
-    f.standard_error_veh_per_h = per_second_to_per_hour(std::max(by_vehicles, batch_means_error(batch_crossings, batch_observed_s)));
+    const double by_batches = batch_means_error(batch_crossings, batch_observed_s);
+    f.standard_error_veh_per_h = per_second_to_per_hour(std::max(by_vehicles, by_batches));
   }
   return f;
 }

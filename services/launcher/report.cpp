@@ -45,8 +45,8 @@ void print_flow(const char* what, const recording::FlowMeasurement& f, std::ostr
   if (f.demand_veh_per_h <= 0.0 && f.crossings == 0) return;
   out << "  flow " << what << ": " << f1(f.measured_veh_per_h) << " veh/h measured in the window against a demand of "
       << f1(f.demand_veh_per_h) << " veh/h (" << (f.relative_error() >= 0 ? "+" : "") << f1(100.0 * f.relative_error())
-      << " % ± " << f1(100.0 * f.relative_standard_error()) << " %; " << f.vehicles << " vehicles, " << f.crossings << " detector crossings in " << f1(f.observed_s / 3600.0)
-      << " detector-hours)\n";
+      << " % ± " << f1(100.0 * f.relative_standard_error()) << " %; " << f.vehicles << " vehicles, " << f.crossings
+      << " detector crossings in " << f1(f.observed_s / 3600.0) << " detector-hours)\n";
 }
 
 }  // namespace
