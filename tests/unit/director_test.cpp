@@ -112,6 +112,37 @@ TEST(Casting, AVehicleThatCannotReachTheSlotInTimeOrMustPassTheEgoOnOneLaneCanno
   EXPECT_EQ(casting_cost(slot, play.roles[0], world[0], blocked, cfg), kInf);
 }
 
+TEST(Casting, OnOneLaneAVehicleWithAnotherBetweenItAndTheEgoCannotPlayARoleBehindAClearZone) {
+  const PlayConfig play = lead_play();
+  DirectorConfig cfg;
+  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
+  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), Lanes{1, 1})[0];
+  // Vehicle 1 could reach the slot (3040 m); vehicle 2, between it and the ego, follows the ego's
+  // pace and is still between them at the start, where the play wants 3 to 35 m ahead of the ego
+  // clear: on one lane nothing gets it out.
+  const std::vector<ObservedVehicle> world = {vehicle(1, 2200.0, 24.0), vehicle(2, 2100.0, 25.0)};
+  const std::vector<ZoneAtStart> zones = {{Direction::kForward, 0, 3003.0, 3035.0}};
+  const CastingSituation zoned{world, ego, 40.0, 3000.0, Lanes{1, 1}, {}, zones};
+  EXPECT_TRUE(stuck_between(slot, world[0].s_m, world[0].id, zoned));
+  EXPECT_EQ(casting_cost(slot, play.roles[0], world[0], zoned, cfg), kInf);
+  // Vehicle 2 itself has nobody between it and the ego.
+  EXPECT_FALSE(stuck_between(slot, world[1].s_m, world[1].id, zoned));
+  // Without a zone in the way, or with a second lane to clear it into, vehicle 1 may play.
+  const CastingSituation open{world, ego, 40.0, 3000.0, Lanes{1, 1}, {}};
+  EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], world[0], open, cfg)));
+  const CastingSituation two{world, ego, 40.0, 3000.0, Lanes{2, 0}, {}, zones};
+  EXPECT_FALSE(stuck_between(slot, world[0].s_m, world[0].id, two));
+  // Nor is a vehicle created out of sight beyond vehicle 2 any better (20 s to go: a place ahead
+  // is found without the zone, none with it).
+  ScenarioConfig sc = testing::road_scenario(1, 1);
+  const WindowBounds w = WindowBounds::around(ego.s_m, sc.window);
+  const std::vector<ObservedVehicle> only_2 = {world[1]};
+  const CastingSituation create_open{only_2, ego, 20.0, 3000.0, Lanes{1, 1}, {}};
+  const CastingSituation create_zoned{only_2, ego, 20.0, 3000.0, Lanes{1, 1}, {}, zones};
+  EXPECT_TRUE(hidden_placement(slot, 4.5, create_open, w, cfg).has_value());
+  EXPECT_FALSE(hidden_placement(slot, 4.5, create_zoned, w, cfg).has_value());
+}
+
 TEST(Casting, NewVehiclesAreCreatedOutOfSightWithASafeGap) {
   const PlayConfig play = lead_play();
   DirectorConfig cfg;
@@ -135,12 +166,39 @@ TEST(Casting, NewVehiclesAreCreatedOutOfSightWithASafeGap) {
   ASSERT_TRUE(hidden_placement(slot, 4.5, at, w, cfg).has_value());
   const auto free_place = *hidden_placement(slot, 4.5, at, w, cfg);
   EXPECT_DOUBLE_EQ(free_place.s_m, w.inner_front_m + cfg.hidden_margin_m);
+  EXPECT_NEAR(free_place.speed_mps, 19.67, 0.01);
   // Occupied there: it moves on to a free place.
   world = {vehicle(9, free_place.s_m + 5.0, 25.0)};
   const CastingSituation busy{world, ego, 30.0, 3000.0, Lanes{2, 0}, {}};
   const auto moved = hidden_placement(slot, 4.5, busy, w, cfg);
   ASSERT_TRUE(moved.has_value());
   EXPECT_GT(std::abs(moved->s_m - world[0].s_m), 4.5 + 5.0 + 1.5 * 25.0 - 1e-9);
+}
+
+TEST(Casting, AVehicleWhoseIdealPlaceIsBeyondTheWindowIsCreatedOnlyWithRoomLeftInTheBand) {
+  // An oncoming car 200 m ahead of the ego at the start (3200 m, 22 m/s). With the ego at 2900 m
+  // the window ends at 3900 m; created vehicles stay 30 m inside it.
+  DirectorConfig cfg;
+  ScenarioConfig sc = testing::road_scenario(1, 1);
+  const EgoObservation ego = testing::ego_at(0, 2900.0, 25.0);
+  const WindowBounds w = WindowBounds::around(ego.s_m, sc.window);
+  Slot slot;
+  slot.direction = Direction::kBackward;
+  slot.lane = 0;
+  slot.s_m = 3200.0;
+  slot.speed_mps = 22.0;
+  const std::vector<ObservedVehicle> world;
+  // 40 s to go: the ideal place (4080 m) is beyond the window; at its edge the car would have to
+  // wait at 16.75 m/s, 5.25 below the start speed (more than half the band's 8): not yet.
+  const CastingSituation early{world, ego, 40.0, 3000.0, Lanes{1, 1}, {}};
+  EXPECT_TRUE(transport_band(slot, cfg).contains((w.front_edge_m - 30.0 - slot.s_m) / 40.0));
+  EXPECT_FALSE(hidden_placement(slot, 4.5, early, w, cfg).has_value());
+  // 35 s to go: at the edge it needs 19.1 m/s.
+  const CastingSituation later{world, ego, 35.0, 3000.0, Lanes{1, 1}, {}};
+  const auto place = hidden_placement(slot, 4.5, later, w, cfg);
+  ASSERT_TRUE(place.has_value());
+  EXPECT_DOUBLE_EQ(place->s_m, w.front_edge_m - 30.0);
+  EXPECT_NEAR(place->speed_mps, 670.0 / 35.0, 1e-9);
 }
 
 TEST(Staging, APlayThatDoesNotFitBesideTheEgosLaneIsMirrored) {

@@ -19,6 +19,12 @@ constexpr double kEdgeMargin_m = 30.0;
 // Safe gap for a created vehicle to its neighbours: standstill distance plus a time gap.
 constexpr double kPlacementStandstill_m = 5.0;
 constexpr double kPlacementTimeGap_s = 1.5;
+// While the ideal place is still beyond the window's edge (it comes within the window later), a
+// vehicle is only created where it needs at most this share of the transport band's offset to
+// reach its start in time: the rest is left for the corrections the estimate's changes ask for.
+// (Created early at the window's edge, an oncoming actor had to wait at the band's low edge, and
+// when the ego slowed in the last seconds it could not wait any longer and came too early.)
+constexpr double kEarlyCreationSpeedShare = 0.5;
 
 // A vehicle whose best plan misses the slot by up to this share of the role's tolerance may
 // still be cast (re-planning on the way closes most of it).
@@ -53,6 +59,28 @@ bool gap_is_free(const Slot& slot, double s_m, double length_m, double speed_mps
 }
 }  // namespace
 
+bool stuck_between(const Slot& slot, double s_m, VehicleId self, const CastingSituation& at) {
+  if (at.lanes.of(slot.direction) > 1 || at.ego.direction != slot.direction) return false;
+  const int dir = sign(slot.direction);
+  const double ego_then_p = dir * at.ego_s_at_handover_m;
+  const double slot_p = dir * slot.s_m;
+  if (slot_p <= ego_then_p) return false;
+  const bool zone_between = std::any_of(at.zones.begin(), at.zones.end(), [&](const ZoneAtStart& z) {
+    if (z.direction != slot.direction || z.lane != slot.lane) return false;
+    const double a = dir * z.from_s_m;
+    const double b = dir * z.to_s_m;
+    return std::max(a, b) > ego_then_p && std::min(a, b) < slot_p;
+  });
+  if (!zone_between) return false;
+  const double ego_p = dir * at.ego.s_m;
+  const double p = dir * s_m;
+  return std::any_of(at.world.begin(), at.world.end(), [&](const ObservedVehicle& v) {
+    if (v.id == self || !occupies(v, slot.direction, slot.lane)) return false;
+    const double q = dir * v.s_m;
+    return q > ego_p && q < p;
+  });
+}
+
 double casting_cost(const Slot& slot, const PlayRoleConfig& role, const ObservedVehicle& v, const CastingSituation& at,
                     const DirectorConfig& cfg) {
   if (v.direction != slot.direction || !type_fits(role, v) || at.time_to_start_s <= 0.0) return kInf;
@@ -64,7 +92,7 @@ double casting_cost(const Slot& slot, const PlayRoleConfig& role, const Observed
   const bool one_lane = at.lanes.of(slot.direction) <= 1;
   // On one lane actors do not overtake; faster vehicles may still overtake them (the ego is the
   // driver's to decide: its order must not depend on it).
-  if (one_lane && (b.ego || b.to_pass > 0)) return kInf;
+  if (one_lane && (b.ego || b.to_pass > 0 || stuck_between(slot, v.s_m, v.id, at))) return kInf;
   const int lane_changes = std::abs(v.lane - slot.lane) + b.vehicles + (b.ego ? 1 : 0);
   return std::abs(plan.cruise_mps - v.speed_mps) + cfg.lane_change_cost_mps * lane_changes;
 }
@@ -114,15 +142,17 @@ std::optional<Placement> hidden_placement(const Slot& slot, double length_m, con
   for (const auto& z : zones) {
     if (z.hi <= z.lo) continue;
     const double start = std::clamp(ideal, z.lo, z.hi);
+    const bool beyond = z.region == Region::kOuterFront ? ideal > z.hi : ideal < z.lo;
     for (int k = 0; k < kPlacementTries; ++k) {
       const double offset = kPlacementStep_m * ((k + 1) / 2) * (k % 2 == 0 ? 1.0 : -1.0);
       const double s = start + offset;
       if (s < z.lo || s > z.hi) continue;
       const double needed = needed_speed_mps(slot, s, t);
       if (!band.contains(needed)) continue;
+      if (beyond && std::abs(needed - slot.speed_mps) > kEarlyCreationSpeedShare * cfg.max_speed_offset_mps) continue;
       if (one_lane) {
         const Between b = between(slot, kNoVehicle, s, t, at.world, at.ego, at.ego_s_at_handover_m);
-        if (b.ego || b.to_pass > 0) continue;
+        if (b.ego || b.to_pass > 0 || stuck_between(slot, s, kNoVehicle, at)) continue;
       }
       if (!gap_is_free(slot, s, length_m, needed, at)) continue;
       const double cost = std::abs(needed - slot.speed_mps);

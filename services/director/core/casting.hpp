@@ -4,7 +4,8 @@
 // to the average speed that brings it there, plus a lane-change cost for each lane to change and
 // each vehicle to get past. It cannot play the role when that average speed lies outside the
 // transport band (stage.hpp) or it would have to get past the ego where actors cannot (one lane
-// per direction: actors do not overtake). Roles are then assigned jointly (assignment.hpp);
+// per direction: actors do not overtake), nor there with a vehicle between it and the ego that
+// would stand in a clear zone at the start (stuck_between). Roles are then assigned jointly (assignment.hpp);
 // a role without a fitting vehicle gets a new one, created where the driver cannot see it.
 
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "director/core/stage.hpp"
+#include "director/core/transport.hpp"
 
 namespace entourage::director {
 
@@ -22,7 +24,15 @@ struct CastingSituation {
   double ego_s_at_handover_m = 0.0; // where the ego is then
   Lanes lanes;
   TypeAccels type_accel_mps2;
+  std::vector<ZoneAtStart> zones = {};  // the play's clear zones at the start (the ego then)
 };
+
+// On one lane per direction nothing gets out from between the ego and a vehicle ahead of it (actors
+// do not overtake, the others only where the oncoming lane lets them): a vehicle between them now
+// is still between them at the start. Where a clear zone of the slot's lane lies between the ego
+// and a slot ahead of it then, a vehicle at `s_m` with any other vehicle between it and the ego
+// cannot play the role (the play would fail on that vehicle in the zone).
+bool stuck_between(const Slot& slot, double s_m, VehicleId self, const CastingSituation& at);
 
 // The cost of `v` playing a role with start `slot` (infinite: it cannot).
 double casting_cost(const Slot& slot, const PlayRoleConfig& role, const ObservedVehicle& v, const CastingSituation& at,

@@ -245,7 +245,10 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
     sub_roles.push_back(play_.roles[r]);
     sub_slots.push_back(slots[r]);
   }
-  const CastingSituation at{in.world, in.ego, aim.time_s, aim.ego_s_m, setting_.lanes, setting_.type_accel_mps2};
+  const CastingSituation at{in.world,       in.ego,
+                            aim.time_s,     aim.ego_s_m,
+                            setting_.lanes, setting_.type_accel_mps2,
+                            zones_of(staged_, in.ego.direction, in.ego.target_lane, aim.ego_s_m, setting_.lanes)};
   // Vehicles this play cleared off the stage may be cast too (one in the way of an actor that
   // cannot get into its lane may be the better actor).
   std::vector<bool> castable = in.available;
