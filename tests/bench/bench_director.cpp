@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -37,19 +38,35 @@ double percentile(std::vector<double> x, double q) {
 
 // The failure's first reason as its role and kind, so that equal causes group together:
 // "lead: position", "cutter: lane", "a vehicle in a clear zone", "truck: no actor".
-std::string cause_of(const std::string& detail) {
-  const auto start = detail.find(": ");
-  if (detail.rfind("start condition not met", 0) != 0 || start == std::string::npos) return detail;
-  const std::string first = detail.substr(start + 2, detail.find(';', start) - start - 2);
-  if (first.find("in a clear zone") != std::string::npos) return "a vehicle in a clear zone";
-  const std::string role = first.substr(0, first.find(": "));
+// The kind of one problem of a start condition ("truck: 12.0 m from its start position" is
+// "truck: position").
+std::string kind_of(const std::string& problem) {
+  if (problem.find("in a clear zone") != std::string::npos) return "a vehicle in a clear zone";
+  const std::string role = problem.substr(0, problem.find(": "));
   for (const auto& [text, kind] : {std::pair<const char*, const char*>{"start position", "position"},
                                    {"start speed", "speed"},
                                    {"in lane", "lane"},
                                    {"no actor", "no actor"}}) {
-    if (first.find(text) != std::string::npos) return role + ": " + kind;
+    if (problem.find(text) != std::string::npos) return role + ": " + kind;
   }
-  return first;
+  return problem;
+}
+
+// The kinds of the problems in a "; "-separated list, each once.
+std::set<std::string> kinds_of(const std::string& problems) {
+  std::set<std::string> out;
+  for (std::size_t from = 0; from < problems.size();) {
+    const std::size_t end = std::min(problems.find("; ", from), problems.size());
+    out.insert(kind_of(problems.substr(from, end - from)));
+    from = end + 2;
+  }
+  return out;
+}
+
+std::string cause_of(const std::string& detail) {
+  const auto start = detail.find(": ");
+  if (detail.rfind("start condition not met", 0) != 0 || start == std::string::npos) return detail;
+  return kind_of(detail.substr(start + 2, detail.find(';', start) - start - 2));
 }
 
 void print_play(const std::string& name, const std::vector<bench::PlayRunResult>& runs,
@@ -58,6 +75,7 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
   std::vector<double> pos, speed, est, a_acc, a_dec, a_jerk, o_acc, o_dec, o_jerk, waits, beyond;
   int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
   std::map<std::string, int> causes;
+  std::map<std::string, int> missing_at_t2;  // runs in which each kind was missing at trigger point 2
   std::map<std::string, std::pair<int, int>> by_variant;  // ok, runs
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const bench::PlayRunResult& r = runs[i];
@@ -72,6 +90,7 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
     } else {
       ++causes[r.failure.empty() ? std::string("never reached trigger point 2") : cause_of(r.failure)];
     }
+    for (const std::string& k : kinds_of(r.missing_at_trigger2)) ++missing_at_t2[k];
     if (r.position_error_at_trigger2_m >= 0.0) {
       pos_t2.push_back(r.position_error_at_trigger2_m);
       speed_t2.push_back(std::abs(r.speed_error_at_trigger2_mps));
@@ -99,6 +118,10 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
   for (const auto& [v, c] : by_variant) std::printf("   %s %d/%d", v.c_str(), c.first, c.second);
   std::printf("\n");
   for (const auto& [c, k] : causes) std::printf("  failed %3d x  %s\n", k, c.c_str());
+  std::printf("missing on passing trigger point 2 (runs; one run may lack several):");
+  if (missing_at_t2.empty()) std::printf(" nothing");
+  for (const auto& [c, k] : missing_at_t2) std::printf("  %s %d", c.c_str(), k);
+  std::printf("\n");
   std::printf("handed over at trigger point 2 %d / %zu (%.1f %%); after waiting beyond it: %d, waited mean %.1f  p95 %.1f  max %.1f s, "
               "the ego beyond it by mean %.0f  p95 %.0f  max %.0f m\n",
               at_trigger, runs.size(), 100.0 * at_trigger / n, ok - at_trigger, mean(waits), percentile(waits, 0.95),

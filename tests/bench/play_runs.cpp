@@ -96,6 +96,7 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
   std::set<std::pair<VehicleId, VehicleId>> overlapping;     // pairs seen overlapping (each counted once)
   std::set<VehicleId> ego_contacts;
   double first_estimate_s = -1.0;
+  bool seen_beyond_trigger2 = false;  // the first report once the ego passed trigger point 2
   double trigger2_time_s = -1.0;
   const PlayConfig& play = sc.plays.front();
   double end_time_s = -1.0;
@@ -126,6 +127,12 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
       if (trigger2_time_s >= 0.0 && r.position_error_at_trigger2_m < 0.0 && with_errors) {
         r.position_error_at_trigger2_m = std::abs(rep.position_error_m);
         r.speed_error_at_trigger2_mps = rep.speed_error_mps;
+      }
+      if (trigger2_time_s >= 0.0 && !seen_beyond_trigger2) {
+        seen_beyond_trigger2 = true;
+        const std::string waiting = "waiting: ";
+        const auto at = rep.detail.find(waiting);
+        if (at != std::string::npos) r.missing_at_trigger2 = rep.detail.substr(at + waiting.size());
       }
       if (rep.phase == director::PlayPhase::kPreparing && first_estimate_s < 0.0 && rep.estimated_start_time_s >= 0.0) {
         first_estimate_s = rep.estimated_start_time_s;

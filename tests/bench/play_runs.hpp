@@ -47,11 +47,15 @@ struct PlayRunResult {
   std::string failure;               // the failed report's detail
   double position_error_m = 0.0;     // at the handover, the largest over the roles
   double speed_error_mps = 0.0;
-  // The errors of the director's first report once the ego has passed trigger point 2 (the
-  // handover itself, or the first report of the wait, within a second: while transporting it
-  // reports once a second; the position error's size); < 0 if none (nothing was cast).
+  // The errors of the director's report in the step the ego passed trigger point 2 (the handover
+  // itself, or what was still missing then; the position error's size); < 0 if none (nothing was
+  // cast).
   double position_error_at_trigger2_m = -1.0;
   double speed_error_at_trigger2_mps = -1.0;
+  // What the start condition lacked when the ego passed trigger point 2 ("role: ... ; vehicle ...
+  // in a clear zone", as in a failure's detail; the director reports it at that step); empty if
+  // it was met then or nothing was cast.
+  std::string missing_at_trigger2;
   double estimate_error_s = 0.0;     // first estimate (trigger point 1) - actual handover time
   double handover_wait_s = 0.0;      // handed over this long after the ego passed trigger point 2
   double handover_beyond_m = 0.0;    // and the ego this far beyond it

@@ -322,6 +322,11 @@ TEST(PlayPhases, BeyondTriggerPoint2TheHandoverWaitsForTheStartCondition) {
   AtTrigger2 t{DirectorCore(sc, 1), {}, {}};
   drive_to_trigger2(t, 25.0);  // 25 m too far ahead, the tolerance is 10 m
   for (const PlayReport& r : t.out.reports) EXPECT_NE(r.phase, PlayPhase::kFailed) << r.detail;
+  // The step the ego passes trigger point 2 reports at once what is missing.
+  ASSERT_FALSE(t.out.reports.empty());
+  EXPECT_NE(t.out.reports.front().detail.find("beyond trigger point 2, waiting: lead: 25.0 m from its start position"),
+            std::string::npos)
+      << t.out.reports.front().detail;
   // Two seconds later it is in place: handed over, and the report says how late.
   t.in.step = 23;
   t.in.ego = testing::ego_at(23, 3050.5, 25.0);

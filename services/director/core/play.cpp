@@ -140,6 +140,7 @@ PlayOutput PlayRun::step(const PlayInput& in) {
   const int dir = sign(in.ego.direction);
   const PlayPhase before = phase_;
   std::string waiting_for;  // beyond trigger point 2: what the start condition still lacks
+  bool passed_trigger2 = false;  // in this step (reported at once: what was missing then)
   if (phase_ == PlayPhase::kWaiting && x >= dir * play_.trigger1_s_m && x < dir * play_.trigger2_s_m) {
     // Preparing starts with the first estimate; casting at the next step.
     phase_ = PlayPhase::kPreparing;
@@ -162,7 +163,10 @@ PlayOutput PlayRun::step(const PlayInput& in) {
       if (x >= dir * play_.trigger2_s_m) {
         // Beyond trigger point 2: hand over as soon as the start condition holds; until then
         // (at most handover_wait_s) the actors keep closing on their places.
-        if (trigger2_time_s_ < 0.0) trigger2_time_s_ = in.ego.time_s;
+        if (trigger2_time_s_ < 0.0) {
+          trigger2_time_s_ = in.ego.time_s;
+          passed_trigger2 = true;
+        }
         const std::string problems = start_problems(in);
         if (problems.empty() || in.ego.time_s - trigger2_time_s_ >= play_.handover_wait_s - 1e-9) {
           hand_over(in, problems, out);
@@ -187,8 +191,8 @@ PlayOutput PlayRun::step(const PlayInput& in) {
   const bool estimate_moved = std::abs(estimated_start_s_ - reported_estimate_s_) > kEstimateReportThreshold_s;
   const bool progress_due = phase_ == PlayPhase::kTransporting &&
                             in.ego.time_s - last_progress_report_s_ >= kProgressReportInterval_s - 1e-9;
-  if (first_report_ || before != phase_ || estimate_moved || progress_due) {
-    if (progress_due) last_progress_report_s_ = in.ego.time_s;
+  if (first_report_ || before != phase_ || estimate_moved || progress_due || passed_trigger2) {
+    if (progress_due || passed_trigger2) last_progress_report_s_ = in.ego.time_s;
     report(in, out, waiting_for.empty() ? "" : "beyond trigger point 2, waiting: " + waiting_for);
   }
   first_report_ = false;
