@@ -152,6 +152,7 @@ ObservedVehicle from_msg(const msg::VehicleState& m) {
   v.lane = m.lane();
   v.target_lane = m.target_lane();
   v.type_index = m.type_index();
+  v.indicator = m.indicator();
   v.control = static_cast<ControlMode>(m.control());
   v.s_m = m.s_m();
   v.d_m = m.d_m();

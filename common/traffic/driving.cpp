@@ -247,7 +247,7 @@ Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingEnvironme
 
   const Longitudinal lon = longitudinal(v, cf, index, env);
   d.hdm_decided_mps2 = lon.decided_mps2;
-  double a = std::min(lon.applied_mps2, accel_cap);
+  double a = std::min({lon.applied_mps2, accel_cap, gap_seeking_cap_mps2(v, cf, index, d.lane_change)});
   if (scripted) a = scripted_accel_mps2(v, a, cf.idm.max_accel_mps2, env.dt_s());
   d.accel_mps2 = std::max(limit_rise_mps2(v, a, env.dt_s()), -v.driver.max_decel_mps2);
   d.emergency = lon.emergency;

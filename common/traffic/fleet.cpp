@@ -65,7 +65,7 @@ void build_index(LaneIndex& index, const Fleet& fleet, const std::vector<Observe
   for (auto it = vehicles.rbegin(); it != vehicles.rend(); ++it) {
     const Vehicle& v = *it;
     add_to_index(index, v.direction, v.lane, v.target_lane(), v.id, v.progress_m(), v.speed_mps, v.accel_mps2,
-                 v.length_m);
+                 v.length_m, signal_of(static_cast<std::uint8_t>(v.indicator())));
   }
   for (const auto& o : world) {
     if (!fleet.owns(o.id)) add_to_index(index, o);

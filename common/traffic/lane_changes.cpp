@@ -1,12 +1,21 @@
 #include "traffic/lane_changes.hpp"
 
+#include <limits>
+
 #include "traffic/actor_driving.hpp"
 #include "traffic/driving.hpp"
 
 namespace entourage {
 
 namespace {
-Occupant as_occupant(const Vehicle& v) { return Occupant{v.id, v.progress_m(), v.speed_mps, v.accel_mps2, v.length_m}; }
+// A vehicle seeking a gap drops back from the vehicle it lets by to this much below that one's
+// speed and holds it (slower only holds its own lane up; back at full speed it never falls behind).
+constexpr double kLetBySpeed_mps = 5.0;
+
+Occupant as_occupant(const Vehicle& v) {
+  return Occupant{v.id,     v.progress_m(), v.speed_mps, v.accel_mps2,
+                  v.length_m, signal_of(static_cast<std::uint8_t>(v.indicator()))};
+}
 
 // Acceleration another driver (speed `speed_mps`, progress `progress_m`, length `length_m`) would
 // have behind `leader`, estimated with the deciding driver's own parameters (a driver judges
@@ -87,6 +96,35 @@ int mandatory_target_lane(const Vehicle& v, const DrivingEnvironment& env) {
     if (!env.ahead().closed_within(v.direction, target, v.s_m, lookahead)) return target;
   }
   return -1;  // every lane is closed: nowhere to go, the closure stops it
+}
+
+double gap_seeking_cap_mps2(const Vehicle& v, const CarFollowingParams& cf, const LaneIndex& index,
+                            const LaneChangeState& lc) {
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  // Vehicles asked only to change lanes (at their own speed): an actor's speed is the plan's.
+  const bool clearing = director_lane(v) >= 0 && v.control.speed_mps == kOwnDesiredSpeed_mps;
+  if (!clearing || lc.phase != LaneChangePhase::kSignalling || lc.to_lane == v.lane) return kNone;
+  const auto next = index.neighbours(v.direction, lc.to_lane, v.progress_m(), v.id);
+  const Occupant self = as_occupant(v);
+  const double comfort = cf.idm.comfort_decel_mps2;
+  // Dropping back from `o`: braking comfortably until a little slower than it, then holding that.
+  auto drop_back_from = [&](const Occupant& o) { return v.speed_mps <= o.speed_mps - kLetBySpeed_mps ? 0.0 : -comfort; };
+  // The one beside or just behind in the target lane that leaves no safe gap in front of it is
+  // let by, unless it signals towards this vehicle's lane itself (two that each let the other by
+  // braked each other to a standstill): the one behind of such a pair gives way.
+  if (next.follower != nullptr) {
+    const Occupant& f = *next.follower;
+    const bool towards_us = f.signal == (v.lane > lc.to_lane ? 1 : -1);
+    const bool overlaps = gap_between(self, f.progress_m, f.length_m) <= 0.0;
+    if (!towards_us &&
+        (overlaps || estimated_accel(cf, f.progress_m, f.speed_mps, f.length_m, &self) < -v.driver.mobil.safe_decel_mps2)) {
+      return drop_back_from(f);
+    }
+  }
+  // Else it eases in behind the one ahead there.
+  if (next.leader == nullptr) return kNone;
+  if (gap_between(*next.leader, v.progress_m(), v.length_m) <= 0.0) return drop_back_from(*next.leader);
+  return std::max(accel_behind(v, cf, next.leader), -comfort);
 }
 
 LaneChangeState start_moving(const Vehicle& v, int lane, double duration_s) {

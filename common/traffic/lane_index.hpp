@@ -11,6 +11,7 @@
 // traffic (oncoming()).
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "core/ids.hpp"
@@ -23,7 +24,11 @@ struct Occupant {
   double speed_mps = 0.0;
   double accel_mps2 = 0.0;
   double length_m = 0.0;
+  int signal = 0;  // indicator on towards the lane to its left (+1) or right (-1), 0 off
 };
+
+// The `signal` of an indicator (0 off, 1 left, 2 right).
+inline int signal_of(std::uint8_t indicator) { return indicator == 1 ? 1 : indicator == 2 ? -1 : 0; }
 
 class LaneIndex {
  public:

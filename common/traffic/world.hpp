@@ -36,6 +36,7 @@ struct ObservedVehicle {
   int lane = 0;
   int target_lane = 0;
   std::uint8_t type_index = 0;
+  std::uint8_t indicator = 0;                      // 0 off, 1 left, 2 right
   ControlMode control = ControlMode::kAutonomous;  // an actor of a play when not autonomous
   double s_m = 0.0;
   double d_m = 0.0;
@@ -48,8 +49,9 @@ struct ObservedVehicle {
 };
 
 // Adds a vehicle to the lanes it occupies (both lanes while it changes lane).
+// `signal`: the indicator, as Occupant::signal.
 void add_to_index(LaneIndex& index, Direction dir, int lane, int target_lane, VehicleId id, double progress_m,
-                  double speed_mps, double accel_mps2, double length_m);
+                  double speed_mps, double accel_mps2, double length_m, int signal = 0);
 void add_to_index(LaneIndex& index, const ObservedVehicle& v);
 void add_to_index(LaneIndex& index, const EgoObservation& ego);
 

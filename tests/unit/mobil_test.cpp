@@ -1,6 +1,8 @@
 // MOBIL's decision (Kesting et al. 2007), in formula form and in situations built by hand.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "behaviour/mobil.hpp"
 #include "core_test_util.hpp"
 #include "traffic/driving.hpp"
@@ -136,6 +138,86 @@ TEST_F(LaneChangeSituation, KeepRightVehiclesNeverMoveLeft) {
   index.sort();
   const Decision d = decide(truck, index, env);
   EXPECT_EQ(d.lane_change.phase, LaneChangePhase::kNone);
+}
+
+// --- A vehicle the director asks to change lanes finds its gap by speed (gap_seeking_cap_mps2)
+
+class GapSeeking : public LaneChangeSituation {
+ protected:
+  // Car 1 in the right lane, asked (transported, at its own speed) to move left, indicator on.
+  Vehicle seeker(double s, double v) {
+    Vehicle c = car(1, 0, s, v, 33.0);
+    c.control.mode = ControlMode::kTransported;
+    c.control.speed_mps = kOwnDesiredSpeed_mps;
+    c.control.lane = 1;
+    c.lane_change.phase = LaneChangePhase::kSignalling;
+    c.lane_change.to_lane = 1;
+    return c;
+  }
+  void add_signalling(const Vehicle& v, int signal) {
+    index.add(Direction::kForward, v.lane, {v.id, v.s_m, v.speed_mps, 0.0, v.length_m, signal});
+  }
+  double cap(const Vehicle& v) { return gap_seeking_cap_mps2(v, v.driver.car_following, index, v.lane_change); }
+};
+
+TEST_F(GapSeeking, ItDropsBackFromACarBesideItThenHoldsALittleBelowItsSpeed) {
+  Vehicle me = seeker(1000.0, 28.0);
+  add(me);
+  add(car(2, 1, 1002.0, 28.0, 33.0));  // beside it in the target lane
+  index.sort();
+  EXPECT_DOUBLE_EQ(cap(me), -me.driver.car_following.idm.comfort_decel_mps2);
+  me.speed_mps = 22.0;  // 6 m/s slower: it holds that speed until the car has passed
+  EXPECT_DOUBLE_EQ(cap(me), 0.0);
+}
+
+TEST_F(GapSeeking, ACarJustBehindThatLeavesNoSafeGapIsLetBy) {
+  const Vehicle me = seeker(1000.0, 28.0);
+  add(me);
+  add(car(2, 1, 992.0, 30.0, 33.0));  // 3.5 m behind its rear, faster: changing now is unsafe
+  index.sort();
+  EXPECT_FALSE(evaluate_lane_change(me, index, 1).safe);
+  EXPECT_LT(cap(me), 0.0);
+}
+
+TEST_F(GapSeeking, OfTwoThatWantEachOthersLaneTheOneBehindGivesWay) {
+  // Car 2 beside and a little behind wants the right lane (indicator right): car 1 does not let it
+  // by (each letting the other by braked both to a standstill), car 2 drops back behind car 1.
+  const Vehicle me = seeker(1000.0, 28.0);
+  add(me);
+  Vehicle other = car(2, 1, 998.0, 28.0, 33.0);
+  other.control = me.control;
+  other.control.lane = 0;
+  other.lane_change.phase = LaneChangePhase::kSignalling;
+  other.lane_change.to_lane = 0;
+  add_signalling(other, -1);
+  index.sort();
+  EXPECT_EQ(cap(me), std::numeric_limits<double>::infinity());
+  EXPECT_LT(gap_seeking_cap_mps2(other, other.driver.car_following, index, other.lane_change), 0.0);
+}
+
+TEST_F(GapSeeking, ItEasesInBehindTheCarAheadInTheTargetLane) {
+  const Vehicle me = seeker(1000.0, 28.0);
+  add(me);
+  add(car(2, 1, 1020.0, 22.0, 22.0));  // 15.5 m ahead in the target lane, slower
+  index.sort();
+  const double c = cap(me);
+  EXPECT_LT(c, 0.0);
+  EXPECT_GE(c, -me.driver.car_following.idm.comfort_decel_mps2);
+}
+
+TEST_F(GapSeeking, OnlyVehiclesAskedToChangeLanesAtTheirOwnSpeedSeekAGap) {
+  Vehicle me = seeker(1000.0, 28.0);
+  add(me);
+  add(car(2, 1, 1002.0, 28.0, 33.0));
+  index.sort();
+  Vehicle actor = me;
+  actor.control.speed_mps = 30.0;  // an actor on its way: its speed is the plan's
+  EXPECT_EQ(cap(actor), std::numeric_limits<double>::infinity());
+  Vehicle autonomous = me;
+  autonomous.control = ActorControl{};
+  EXPECT_EQ(cap(autonomous), std::numeric_limits<double>::infinity());
+  me.lane_change.phase = LaneChangePhase::kMoving;  // already moving over
+  EXPECT_EQ(cap(me), std::numeric_limits<double>::infinity());
 }
 
 TEST(EmergencyRegime, BrakesHardEnoughToStopBehindAStoppedCar) {

@@ -48,7 +48,7 @@ TEST_P(PlaySucceeds, IsHandedOverWithinToleranceAndRunsToItsEnd) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Shipped, PlaySucceeds,
-                         ::testing::Values(Case{"freeway_lead_brakes", 2}, Case{"freeway_lead_brakes", 3},
+                         ::testing::Values(Case{"freeway_lead_brakes", 2}, Case{"freeway_lead_brakes", 4},
                                            Case{"freeway_cut_in", 7}, Case{"freeway_stopped_vehicle", 5},
                                            Case{"rural_slow_truck", 4}),
                          [](const ::testing::TestParamInfo<Case>& p) {
