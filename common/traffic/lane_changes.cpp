@@ -108,7 +108,9 @@ double gap_seeking_cap_mps2(const Vehicle& v, const CarFollowingParams& cf, cons
   const Occupant self = as_occupant(v);
   const double comfort = cf.idm.comfort_decel_mps2;
   // Dropping back from `o`: braking comfortably until a little slower than it, then holding that.
-  auto drop_back_from = [&](const Occupant& o) { return v.speed_mps <= o.speed_mps - kLetBySpeed_mps ? 0.0 : -comfort; };
+  auto drop_back_from = [&](const Occupant& o) {
+    return v.speed_mps <= o.speed_mps - kLetBySpeed_mps ? 0.0 : -comfort;
+  };
   // The one beside or just behind in the target lane that leaves no safe gap in front of it is
   // let by, unless it signals towards this vehicle's lane itself (two that each let the other by
   // braked each other to a standstill): the one behind of such a pair gives way.
@@ -116,10 +118,9 @@ double gap_seeking_cap_mps2(const Vehicle& v, const CarFollowingParams& cf, cons
     const Occupant& f = *next.follower;
     const bool towards_us = f.signal == (v.lane > lc.to_lane ? 1 : -1);
     const bool overlaps = gap_between(self, f.progress_m, f.length_m) <= 0.0;
-    if (!towards_us &&
-        (overlaps || estimated_accel(cf, f.progress_m, f.speed_mps, f.length_m, &self) < -v.driver.mobil.safe_decel_mps2)) {
-      return drop_back_from(f);
-    }
+    const bool unsafe =
+        overlaps || estimated_accel(cf, f.progress_m, f.speed_mps, f.length_m, &self) < -v.driver.mobil.safe_decel_mps2;
+    if (!towards_us && unsafe) return drop_back_from(f);
   }
   // Else it eases in behind the one ahead there.
   if (next.leader == nullptr) return kNone;

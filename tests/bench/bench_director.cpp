@@ -36,8 +36,6 @@ double percentile(std::vector<double> x, double q) {
   return x[std::min(i, x.size() - 1)];
 }
 
-// The failure's first reason as its role and kind, so that equal causes group together:
-// "lead: position", "cutter: lane", "a vehicle in a clear zone", "truck: no actor".
 // The kind of one problem of a start condition ("truck: 12.0 m from its start position" is
 // "truck: position").
 std::string kind_of(const std::string& problem) {
@@ -63,6 +61,8 @@ std::set<std::string> kinds_of(const std::string& problems) {
   return out;
 }
 
+// The failure's first reason as its role and kind, so that equal causes group together:
+// "lead: position", "cutter: lane", "a vehicle in a clear zone", "truck: no actor".
 std::string cause_of(const std::string& detail) {
   const auto start = detail.find(": ");
   if (detail.rfind("start condition not met", 0) != 0 || start == std::string::npos) return detail;

@@ -5,8 +5,9 @@
 // each vehicle to get past. It cannot play the role when that average speed lies outside the
 // transport band (stage.hpp) or it would have to get past the ego where actors cannot (one lane
 // per direction: actors do not overtake), nor there with a vehicle between it and the ego that
-// would stand in a clear zone at the start (stuck_between). Roles are then assigned jointly (assignment.hpp);
-// a role without a fitting vehicle gets a new one, created where the driver cannot see it.
+// would stand in a clear zone at the start (stuck_between). Roles are then assigned jointly
+// (assignment.hpp); a role without a fitting vehicle gets a new one, created where the driver
+// cannot see it.
 
 #include <cstdint>
 #include <optional>
