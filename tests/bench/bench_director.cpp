@@ -21,6 +21,9 @@ namespace {
 
 // A handover this soon after the ego passed trigger point 2 is at it (the same step).
 constexpr double kAtTrigger_s = 1e-6;
+// A run whose ego the director held up longer than this is counted apart (a steady driver
+// slowed by some 10 % over a preparation of about a minute).
+constexpr double kLongHoldUp_s = 5.0;
 
 double mean(const std::vector<double>& x) {
   if (x.empty()) return 0.0;
@@ -72,6 +75,7 @@ std::string cause_of(const std::string& detail) {
 void print_play(const std::string& name, const std::vector<bench::PlayRunResult>& runs,
                 const std::vector<bench::EgoVariant>& variants) {
   std::vector<double> pos_t2, speed_t2;  // on passing trigger point 2
+  std::vector<double> held_up;  // s, per run
   std::vector<double> pos, speed, est, a_acc, a_dec, a_jerk, o_acc, o_dec, o_jerk, waits, beyond;
   int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
   std::map<std::string, int> causes;
@@ -98,6 +102,7 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
     pos.push_back(std::abs(r.position_error_m));
     speed.push_back(std::abs(r.speed_error_mps));
     est.push_back(std::abs(r.estimate_error_s));
+    held_up.push_back(r.held_up_s);
     if (r.actors.vehicle_steps > 0) {
       a_acc.push_back(r.actors.max_accel_mps2);
       a_dec.push_back(r.actors.max_decel_mps2);
@@ -132,6 +137,10 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
               "p95 %.2f km/h\n",
               pos_t2.size(), mean(pos_t2), percentile(pos_t2, 0.95), 3.6 * mean(speed_t2), 3.6 * percentile(speed_t2, 0.95));
   std::printf("start-time estimate at trigger 1, |error| (s): mean %.2f   p95 %.2f\n", mean(est), percentile(est, 0.95));
+  const auto long_holds = std::count_if(held_up.begin(), held_up.end(), [](double h) { return h > kLongHoldUp_s; });
+  std::printf("the ego held up by the director, trigger point 1 to 2 against the same run without it (s): median %.1f  "
+              "p95 %.1f  max %.1f; more than %.0f s in %td runs\n",
+              percentile(held_up, 0.5), percentile(held_up, 0.95), percentile(held_up, 1.0), kLongHoldUp_s, long_holds);
   std::printf("while being moved into place (inner region), per run largest: median / p95 / max\n");
   std::printf("  actors      accel %.2f / %.2f / %.2f m/s2   decel %.2f / %.2f / %.2f m/s2   jerk %.1f / %.1f / %.1f m/s3\n",
               percentile(a_acc, 0.5), percentile(a_acc, 0.95), percentile(a_acc, 1.0), percentile(a_dec, 0.5),
@@ -195,14 +204,19 @@ int run(int argc, char** argv) {
       bench::EgoVariant v{};
       const ScenarioConfig sc = plain ? loaded.config : bench::vary_ego(loaded.config, i, s, &v);
       results.push_back(bench::run_play(sc, s, trace ? stderr : nullptr, trace_traffic ? stderr : nullptr));
+      const bench::TriggerTimes undirected = bench::trigger_times_undirected(sc, s);
+      bench::PlayRunResult& last = results.back();
+      if (last.trigger2_time_s >= 0.0 && undirected.trigger2_s >= 0.0) {
+        last.held_up_s = (last.trigger2_time_s - last.trigger1_time_s) - (undirected.trigger2_s - undirected.trigger1_s);
+      }
       variants.push_back(v);
       if (verbose) {
         const bench::PlayRunResult& r = results.back();
         std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s waited %4.1f s created %d "
-                    "overlaps %d/%d  %s\n",
+                    "overlaps %d/%d held up %4.1f s  %s\n",
                     i, static_cast<unsigned long long>(s), bench::to_string(v), director::to_string(r.final_phase),
                     r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s, r.handover_wait_s, r.created,
-                    r.overlaps_with_actor, r.overlaps_other, r.failure.c_str());
+                    r.overlaps_with_actor, r.overlaps_other, r.held_up_s, r.failure.c_str());
       }
     }
     print_play(loaded.config.plays.front().name + " (" + loaded.config.name + ")", results, variants);

@@ -87,6 +87,23 @@ ScenarioConfig vary_ego(ScenarioConfig sc, int index, std::uint64_t seed, EgoVar
   return sc;
 }
 
+TriggerTimes trigger_times_undirected(const ScenarioConfig& sc, std::uint64_t seed) {
+  TriggerTimes t;
+  const PlayConfig play = sc.plays.front();
+  ScenarioConfig undirected = sc;
+  undirected.plays.clear();
+  WindowCores cores(undirected, seed);
+  const auto passed = [&](const StepInput& in, double s_m) { return sign(in.ego.direction) * (in.ego.s_m - s_m) >= 0.0; };
+  for (Step k = 0; k <= undirected.steps() && !cores.at_road_end() && t.trigger2_s < 0.0; ++k) {
+    StepInput in = cores.next_input();
+    const StepOutputs out = cores.compute(in);
+    if (t.trigger1_s < 0.0 && passed(in, play.trigger1_s_m)) t.trigger1_s = in.ego.time_s;
+    if (t.trigger2_s < 0.0 && passed(in, play.trigger2_s_m)) t.trigger2_s = in.ego.time_s;
+    cores.publish(in, out);
+  }
+  return t;
+}
+
 PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* trace, std::FILE* traffic) {
   PlayRunResult r;
   WindowCores cores(sc, seed);
@@ -102,14 +119,14 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
   double end_time_s = -1.0;
   for (Step k = 0; k <= last && !cores.at_road_end(); ++k) {
     StepInput in = cores.next_input();
-    StepOutputs out;
-    out.generator = cores.generator().step(in);
-    out.micro = cores.micro().step(in);
-    out.meso = cores.meso().step(in);
-    out.director = cores.direct(in);
+    const StepOutputs out = cores.compute(in);
     const WindowBounds w = WindowBounds::around(in.ego.s_m, sc.window);
+    if (r.trigger1_time_s < 0.0 && sign(in.ego.direction) * (in.ego.s_m - play.trigger1_s_m) >= 0.0) {
+      r.trigger1_time_s = in.ego.time_s;
+    }
     if (trigger2_time_s < 0.0 && sign(in.ego.direction) * (in.ego.s_m - play.trigger2_s_m) >= 0.0) {
       trigger2_time_s = in.ego.time_s;
+      r.trigger2_time_s = trigger2_time_s;
     }
     for (const Handoff& h : out.director.births) {
       ++r.created;

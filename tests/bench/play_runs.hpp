@@ -57,6 +57,11 @@ struct PlayRunResult {
   // it was met then or nothing was cast.
   std::string missing_at_trigger2;
   double estimate_error_s = 0.0;     // first estimate (trigger point 1) - actual handover time
+  double trigger1_time_s = -1.0;     // when the ego passed trigger point 1 (< 0: never)
+  double trigger2_time_s = -1.0;     // and trigger point 2
+  // The ego's time from trigger point 1 to 2 beyond that of the same run without the director
+  // (trigger_times_undirected; filled by the caller): how long the director held the ego up.
+  double held_up_s = 0.0;
   double handover_wait_s = 0.0;      // handed over this long after the ego passed trigger point 2
   double handover_beyond_m = 0.0;    // and the ego this far beyond it
   MotionExtremes actors;             // while transported, in the inner region (micro)
@@ -74,5 +79,14 @@ struct PlayRunResult {
 // ego ("id@ahead/speed/Llane", `<` oncoming, then T transported, C controlled, R releasing).
 PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* trace = nullptr,
                        std::FILE* traffic = nullptr);
+
+// The same run without the director (the scenario's plays removed): when the ego passes the first
+// play's trigger points 1 and 2 in traffic that nobody stages (< 0: never). Against
+// PlayRunResult's times, how much the director held the ego up.
+struct TriggerTimes {
+  double trigger1_s = -1.0;
+  double trigger2_s = -1.0;
+};
+TriggerTimes trigger_times_undirected(const ScenarioConfig& sc, std::uint64_t seed);
 
 }  // namespace entourage::bench

@@ -80,6 +80,16 @@ class WindowCores {
   // The director's step for `in` (it sees the same ego and world as the region cores).
   director::DirectorOutput direct(const StepInput& in) { return director_.step(in); }
 
+  // Every core's step for `in`, in the order the lockstep runs them.
+  StepOutputs compute(const StepInput& in) {
+    StepOutputs out;
+    out.generator = generator_.step(in);
+    out.micro = micro_.step(in);
+    out.meso = meso_.step(in);
+    out.director = direct(in);
+    return out;
+  }
+
   // Publishes what the cores computed for `in` as the world and handoffs of its step.
   void publish(const StepInput& in, const StepOutputs& out) {
     world_.clear();
