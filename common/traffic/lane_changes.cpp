@@ -118,9 +118,16 @@ double gap_seeking_cap_mps2(const Vehicle& v, const CarFollowingParams& cf, cons
     const Occupant& f = *next.follower;
     const bool towards_us = f.signal == (v.lane > lc.to_lane ? 1 : -1);
     const bool overlaps = gap_between(self, f.progress_m, f.length_m) <= 0.0;
-    const bool unsafe =
-        overlaps || estimated_accel(cf, f.progress_m, f.speed_mps, f.length_m, &self) < -v.driver.mobil.safe_decel_mps2;
-    if (!towards_us && unsafe) return drop_back_from(f);
+    // Judged as if it drove at that one's speed: a gap that is only too short because this vehicle
+    // is slower is closed by matching speeds behind the leader there, not by letting by (a
+    // vehicle that dropped back below the lane's speed found every following gap unsafe).
+    Occupant matched = self;
+    matched.speed_mps = std::max(self.speed_mps, f.speed_mps);
+    const bool unsafe = overlaps || estimated_accel(cf, f.progress_m, f.speed_mps, f.length_m, &matched) <
+                                        -v.driver.mobil.safe_decel_mps2;
+    // A slower one is holding back to let it in (or will be passed): not let by.
+    const bool slower = f.speed_mps < self.speed_mps;
+    if (!towards_us && !slower && unsafe) return drop_back_from(f);
   }
   // Else it eases in behind the one ahead there.
   if (next.leader == nullptr) return kNone;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "core_test_util.hpp"
 #include "director_test_util.hpp"
@@ -395,6 +396,60 @@ TEST(Aim, FarFromTheStartActorsAimAtTriggerPoint2NearItAShortHorizonAhead) {
   EXPECT_DOUBLE_EQ(slots[0].s_m, 3000.0 + 40.0 - 5.0 * 3.0);
   EXPECT_DOUBLE_EQ(slots[0].speed_mps, 20.0);
   EXPECT_DOUBLE_EQ(slots[1].s_m, 3000.0 + 300.0 - 45.0 * 3.0);
+}
+
+// A vehicle cleared off the ego's lane that waits, indicator on, to change into the next lane
+// is let in: the vehicle just behind it there holds back, and drives on at its own speed once the
+// other has moved over.
+TEST(Clearing, AVehicleWaitingToLeaveAZoneIsLetInByTheOneJustBehindItInTheTargetLane) {
+  ScenarioConfig sc = testing::minimal_scenario();
+  PlayConfig play = lead_play();
+  play.roles[0].ahead_m = 250.0;
+  play.clear = {{0, 3.0, 240.0}};
+  sc.plays = {play};
+  DirectorCore core(sc, 1);
+  StepInput in;
+  ObservedVehicle waiting = vehicle(8, 2100.0, 25.0, 0);  // 100 m ahead of the ego: in the zone
+  const ObservedVehicle behind = vehicle(9, 2092.0, 26.0, 1);  // beside it, a little behind
+  auto command_for = [](const DirectorOutput& out, VehicleId id) -> const ActorControl* {
+    for (const ActorCommand& c : out.commands) {
+      if (c.vehicle == id) return &c.control;
+    }
+    return nullptr;
+  };
+  DirectorOutput out;
+  std::optional<ActorControl> asked;  // commands are sent when they change
+  for (Step k = 0; k < 3; ++k) {  // trigger point 1; cast; transporting and clearing
+    in.step = k;
+    in.ego = testing::ego_at(k, 2000.0 + 2.5 * static_cast<double>(k), 25.0);
+    in.world_prev = {vehicle(7, 2260.0, 25.0), waiting, behind};
+    out = core.step(in);
+    if (const ActorControl* c = command_for(out, 8)) asked = *c;
+    EXPECT_EQ(command_for(out, 9), nullptr);  // before it signals nobody holds back for it
+  }
+  ASSERT_TRUE(asked.has_value());
+  EXPECT_EQ(asked->lane, 1);
+  EXPECT_EQ(asked->speed_mps, kOwnDesiredSpeed_mps);
+  in.step = 3;
+  in.ego = testing::ego_at(3, 2007.5, 25.0);
+  waiting.indicator = 1;  // left
+  in.world_prev = {vehicle(7, 2260.0, 25.0), waiting, behind};
+  out = core.step(in);
+  const ActorControl* holds = command_for(out, 9);
+  ASSERT_NE(holds, nullptr);
+  EXPECT_EQ(holds->mode, ControlMode::kTransported);
+  EXPECT_EQ(holds->lane, 1);
+  EXPECT_NEAR(holds->speed_mps, 25.0 - kLetIn_mps, 1e-9);
+  // It moves over: the one that let it in drives on as it likes, in its lane.
+  in.step = 4;
+  in.ego = testing::ego_at(4, 2010.0, 25.0);
+  waiting.target_lane = 1;
+  in.world_prev = {vehicle(7, 2260.0, 25.0), waiting, behind};
+  out = core.step(in);
+  const ActorControl* after = command_for(out, 9);
+  ASSERT_NE(after, nullptr);
+  EXPECT_EQ(after->speed_mps, kOwnDesiredSpeed_mps);
+  EXPECT_EQ(after->lane, 1);
 }
 
 }  // namespace

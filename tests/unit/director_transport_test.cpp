@@ -93,6 +93,23 @@ TEST(Transport, AVehicleThatWouldStandInAClearZoneIsSentToTheNextLaneOrOutOfTheZ
   EXPECT_FALSE(clear(vehicle(2, 2500.0, 25.0), play, Lanes{2, 0}, ego).has_value());
 }
 
+TEST(Transport, TheVehicleJustBehindInTheTargetLaneLetsAWaitingVehicleInUnlessTheEgoIsThere) {
+  const ObservedVehicle waiting = vehicle(1, 1000.0, 25.0, 0);
+  const EgoObservation ego = testing::ego_at(0, 800.0, 25.0, 0);
+  // Beside it (overlapping) and further back: the nearer one lets it in; one ahead does not.
+  const std::vector<ObservedVehicle> world{waiting, vehicle(2, 998.0, 27.0, 1), vehicle(3, 960.0, 27.0, 1),
+                                           vehicle(4, 1003.0, 27.0, 1)};
+  const ObservedVehicle* f = follower_to_let_in(waiting, 1, world, ego);
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(f->id, 2U);
+  // Too far behind (more than kLetInReach_s at its speed from the waiting one's rear): nobody.
+  const std::vector<ObservedVehicle> far{waiting, vehicle(3, 1000.0 - 4.5 - kLetInReach_s * 27.0 - 1.0, 27.0, 1)};
+  EXPECT_EQ(follower_to_let_in(waiting, 1, far, ego), nullptr);
+  // The ego just behind it in that lane: the ego is not asked, and nobody behind the ego either.
+  EXPECT_EQ(follower_to_let_in(waiting, 1, {waiting, vehicle(3, 960.0, 27.0, 1)}, testing::ego_at(0, 985.0, 25.0, 1)),
+            nullptr);
+}
+
 TEST(Transport, ZonesOfALaneTooCloseToStandBetweenAreClearedAsOne) {
   const ZoneAtStart a{Direction::kForward, 1, 100.0, 120.0};
   const ZoneAtStart b{Direction::kForward, 1, 130.0, 160.0};  // 10 m beyond a: too close

@@ -179,6 +179,25 @@ TEST_F(GapSeeking, ACarJustBehindThatLeavesNoSafeGapIsLetBy) {
   EXPECT_LT(cap(me), 0.0);
 }
 
+TEST_F(GapSeeking, AGapOnlyTooShortBecauseItIsSlowerIsClosedByMatchingSpeedNotByLettingBy) {
+  Vehicle me = seeker(1000.0, 22.0);
+  add(me);
+  add(car(2, 1, 960.0, 30.0, 33.0));  // 35.5 m behind its rear, 8 m/s faster
+  index.sort();
+  EXPECT_FALSE(evaluate_lane_change(me, index, 1).safe);
+  // At that car's speed the gap would be safe: it speeds up (nothing ahead there) instead of
+  // falling back, which had left it below the lane's speed for good.
+  EXPECT_EQ(cap(me), std::numeric_limits<double>::infinity());
+}
+
+TEST_F(GapSeeking, ASlowerCarBesideItIsNotLetByItMayBeHoldingBackToLetItIn) {
+  const Vehicle me = seeker(1000.0, 28.0);
+  add(me);
+  add(car(2, 1, 999.0, 26.0, 33.0));  // beside it, 2 m/s slower (the director's let-in)
+  index.sort();
+  EXPECT_EQ(cap(me), std::numeric_limits<double>::infinity());
+}
+
 TEST_F(GapSeeking, OfTwoThatWantEachOthersLaneTheOneBehindGivesWay) {
   // Car 2 beside and a little behind wants the right lane (indicator right): car 1 does not let it
   // by (each letting the other by braked both to a standstill), car 2 drops back behind car 1.

@@ -340,8 +340,13 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
                                     role_lanes, setting_.lanes, setting_.director};
   // Vehicle i, ours from now on, is told to clear out (a cleared one keeps its last command until
   // the handover); a speed is given with the lead actors get (drive_speed_mps).
-  auto clear = [&](std::size_t i, const Clearance& c) {
+  auto clear = [&](std::size_t i, const Clearance& c, bool off_a_zone) {
     const ObservedVehicle& v = in.world[i];
+    if (off_a_zone) {
+      leaving_zone_.insert(v.id);
+    } else {
+      leaving_zone_.erase(v.id);
+    }
     if (!is_cleared(v.id)) {
       cleared_.push_back(v.id);
       in.available[i] = false;
@@ -356,7 +361,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   auto ours_or_free = [&](std::size_t i) { return is_cleared(in.world[i].id) || in.available[i]; };  // not an actor
   for (std::size_t i = 0; i < in.world.size(); ++i) {
     if (!ours_or_free(i)) continue;
-    if (const auto c = clear_out(in.world[i], situation)) clear(i, *c);
+    if (const auto c = clear_out(in.world[i], situation)) clear(i, *c, true);
   }
   // Vehicles in an actor's way to its slot make way where they can.
   for (std::size_t r = 0; r < roles_.size(); ++r) {
@@ -364,9 +369,10 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
     if (actor == nullptr) continue;
     for (std::size_t i = 0; i < in.world.size(); ++i) {
       if (!ours_or_free(i)) continue;
-      if (const auto c = make_way(in.world[i], slots[r], *actor, roles_[r].command_mps, situation)) clear(i, *c);
+      if (const auto c = make_way(in.world[i], slots[r], *actor, roles_[r].command_mps, situation)) clear(i, *c, false);
     }
   }
+  let_in(in, out);
   if (time_to_start_s > kHoldLanesBefore_s) return;
   // Shortly before the start, vehicles beside a zone keep their lane (at their own speed), so that
   // none changes into it at the last moment.
@@ -383,6 +389,45 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
     cleared_.push_back(v.id);
     in.available[i] = false;
     command(v.id, transported(kOwnDesiredSpeed_mps, v.lane), in.step, out);
+  }
+}
+
+void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
+  // The lane `id` was asked to change into while it has not started moving there; -1 otherwise.
+  auto waiting_for_lane = [&](VehicleId id) {
+    const auto cmd = sent_.find(id);
+    const ObservedVehicle* v = find(in, id);
+    if (cmd == sent_.end() || v == nullptr || cmd->second.mode != ControlMode::kTransported) return -1;
+    const int lane = cmd->second.lane;
+    const bool waits = lane >= 0 && v->lane == v->target_lane && v->lane != lane && v->indicator != 0;
+    return waits ? lane : -1;
+  };
+  for (auto it = letting_in_.begin(); it != letting_in_.end();) {
+    const ObservedVehicle* f = find(in, it->first);
+    if (f != nullptr && waiting_for_lane(it->second) >= 0) {
+      ++it;
+      continue;
+    }
+    if (f != nullptr) command(f->id, transported(kOwnDesiredSpeed_mps, f->lane), in.step, out);
+    it = letting_in_.erase(it);
+  }
+  const std::vector<VehicleId> cleared = cleared_;
+  for (VehicleId id : cleared) {
+    if (leaving_zone_.count(id) == 0) continue;  // making way for an actor: it may wait
+    const int lane = waiting_for_lane(id);
+    if (lane < 0 || letting_in_.count(id) != 0) continue;
+    const ObservedVehicle& v = *find(in, id);
+    const ObservedVehicle* f = follower_to_let_in(v, lane, in.world, in.ego);
+    if (f == nullptr) continue;
+    const auto i = static_cast<std::size_t>(f - in.world.data());
+    const bool lets_in_another = letting_in_.count(f->id) != 0 && letting_in_[f->id] != id;
+    if (lets_in_another || !(is_cleared(f->id) || in.available[i])) continue;  // an actor, or another play's
+    if (!is_cleared(f->id)) {
+      cleared_.push_back(f->id);
+      in.available[i] = false;
+    }
+    letting_in_[f->id] = id;
+    command(f->id, transported(std::max(0.0, v.speed_mps - kLetIn_mps), f->lane), in.step, out);
   }
 }
 

@@ -19,6 +19,7 @@
 
 #include <cstdint>
 #include <map>
+#include <set>
 #include <optional>
 #include <string>
 #include <vector>
@@ -123,6 +124,9 @@ class PlayRun {
                    PlayOutput& out);
   void clear_zones(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
                    PlayOutput& out);
+  // Vehicles waiting to change into a lane they were asked for are let in (transport.hpp,
+  // follower_to_let_in); a vehicle that let one in drives on at its own speed in its lane.
+  void let_in(const PlayInput& in, PlayOutput& out);
   // What keeps the start condition from holding now ("" : nothing); sets the roles' errors.
   std::string start_problems(const PlayInput& in);
   // Hands over to the script, or fails with `problems` if there are any.
@@ -150,6 +154,8 @@ class PlayRun {
   std::vector<Role> roles_;
   std::map<VehicleId, ActorControl> sent_;  // the last control written to each vehicle held
   std::vector<VehicleId> cleared_;          // vehicles asked to leave a zone
+  std::map<VehicleId, VehicleId> letting_in_;  // a vehicle holding back -> the one it lets in
+  std::set<VehicleId> leaving_zone_;  // cleared vehicles whose last request was to leave a zone
   std::vector<ActorControl> scripted_;      // per role, once handed over
   std::optional<Script> script_;
   double estimated_start_s_ = -1.0;

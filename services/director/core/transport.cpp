@@ -234,4 +234,24 @@ std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, co
   return std::nullopt;
 }
 
+const ObservedVehicle* follower_to_let_in(const ObservedVehicle& waiting, int lane,
+                                          const std::vector<ObservedVehicle>& world, const EgoObservation& ego) {
+  const double front_p = waiting.progress_m() + 0.5 * waiting.length_m;
+  const double rear_p = waiting.progress_m() - 0.5 * waiting.length_m;
+  const ObservedVehicle* nearest = nullptr;
+  for (const ObservedVehicle& w : world) {
+    if (w.id == waiting.id || w.direction != waiting.direction || !occupies(w, w.direction, lane)) continue;
+    const double w_front_p = w.progress_m() + 0.5 * w.length_m;
+    if (w_front_p > front_p) continue;
+    if (nearest == nullptr || w.progress_m() > nearest->progress_m()) nearest = &w;
+  }
+  if (nearest == nullptr) return nullptr;
+  if (ego.direction == waiting.direction && occupies(ego, ego.direction, lane)) {
+    const double ego_p = sign(ego.direction) * ego.s_m;
+    if (ego_p + 0.5 * ego.length_m <= front_p && ego_p > nearest->progress_m()) return nullptr;
+  }
+  const double gap_m = rear_p - (nearest->progress_m() + 0.5 * nearest->length_m);
+  return gap_m < kLetInReach_s * nearest->speed_mps ? nearest : nullptr;
+}
+
 }  // namespace entourage::director

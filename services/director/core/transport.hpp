@@ -18,7 +18,8 @@
 // to leave: to a neighbouring lane that is no zone's, or to be ahead of the zone or behind it at
 // the start by a speed within the band around its own, planned to be out a few seconds early
 // (not on one lane per direction: there it would have to overtake or be overtaken, which is left
-// to its own driving).
+// to its own driving). A vehicle cleared off a zone that waits to change lanes is let in by the
+// vehicle just behind it in the target lane (follower_to_let_in).
 
 #include <optional>
 #include <vector>
@@ -111,5 +112,19 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
 // stands clear of every zone at the start, at its own speed. Nothing if there is none.
 std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, const ObservedVehicle& actor,
                                   double actor_cmd_mps, const ClearingSituation& at);
+
+// Letting in: a vehicle asked to change lanes at its own speed that still waits in its lane
+// (indicator on) is let in, as drivers let in one who signals: the vehicle just behind it in the
+// target lane (its front behind the waiting one's front, its gap to that one's rear less than
+// kLetInReach_s at its own speed; overlapping counts) is asked to hold back kLetIn_mps below the
+// waiting one's speed until it has moved over. In dense traffic the lane the vehicles are cleared
+// into has no gap wide enough at its speed, and one that waited for a gap fell ever further below
+// that speed (gap_seeking_cap_mps2), with the vehicles behind it, the ego among them.
+inline constexpr double kLetInReach_s = 2.5;
+inline constexpr double kLetIn_mps = 2.0;
+// The vehicle that would let `waiting` into `lane`, if any (nullptr: none close enough, or the
+// ego is the one just behind it there).
+const ObservedVehicle* follower_to_let_in(const ObservedVehicle& waiting, int lane,
+                                          const std::vector<ObservedVehicle>& world, const EgoObservation& ego);
 
 }  // namespace entourage::director
