@@ -399,8 +399,8 @@ TEST(Aim, FarFromTheStartActorsAimAtTriggerPoint2NearItAShortHorizonAhead) {
 }
 
 // A vehicle cleared off the ego's lane that waits, indicator on, to change into the next lane
-// is let in: the vehicle just behind it there holds back, and drives on at its own speed once the
-// other has moved over.
+// is let in: the vehicle just behind it there holds back (one at a time), and drives on at its own
+// speed once the other has moved over.
 TEST(Clearing, AVehicleWaitingToLeaveAZoneIsLetInByTheOneJustBehindItInTheTargetLane) {
   ScenarioConfig sc = testing::minimal_scenario();
   PlayConfig play = lead_play();
@@ -440,13 +440,25 @@ TEST(Clearing, AVehicleWaitingToLeaveAZoneIsLetInByTheOneJustBehindItInTheTarget
   EXPECT_EQ(holds->mode, ControlMode::kTransported);
   EXPECT_EQ(holds->lane, 1);
   EXPECT_NEAR(holds->speed_mps, 25.0 - kLetIn_mps, 1e-9);
-  // It moves over: the one that let it in drives on as it likes, in its lane.
+  // Another comes between them: it holds back now, and the first drives on as it likes.
   in.step = 4;
   in.ego = testing::ego_at(4, 2010.0, 25.0);
-  waiting.target_lane = 1;
-  in.world_prev = {vehicle(7, 2260.0, 25.0), waiting, behind};
+  const ObservedVehicle between = vehicle(10, 2097.0, 25.5, 1);
+  in.world_prev = {vehicle(7, 2260.0, 25.0), waiting, behind, between};
   out = core.step(in);
-  const ActorControl* after = command_for(out, 9);
+  const ActorControl* released = command_for(out, 9);
+  ASSERT_NE(released, nullptr);
+  EXPECT_EQ(released->speed_mps, kOwnDesiredSpeed_mps);
+  const ActorControl* holds_now = command_for(out, 10);
+  ASSERT_NE(holds_now, nullptr);
+  EXPECT_NEAR(holds_now->speed_mps, 25.0 - kLetIn_mps, 1e-9);
+  // It moves over: the one that let it in drives on as it likes, in its lane.
+  in.step = 5;
+  in.ego = testing::ego_at(5, 2012.5, 25.0);
+  waiting.target_lane = 1;
+  in.world_prev = {vehicle(7, 2260.0, 25.0), waiting, behind, between};
+  out = core.step(in);
+  const ActorControl* after = command_for(out, 10);
   ASSERT_NE(after, nullptr);
   EXPECT_EQ(after->speed_mps, kOwnDesiredSpeed_mps);
   EXPECT_EQ(after->lane, 1);

@@ -415,6 +415,7 @@ void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
   for (VehicleId id : cleared) {
     if (leaving_zone_.count(id) == 0) continue;  // making way for an actor: it may wait
     const int lane = waiting_for_lane(id);
+    // One holding back for another is not let in itself meanwhile.
     if (lane < 0 || letting_in_.count(id) != 0) continue;
     const ObservedVehicle& v = *find(in, id);
     const ObservedVehicle* f = follower_to_let_in(v, lane, in.world, in.ego);
@@ -422,6 +423,18 @@ void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
     const auto i = static_cast<std::size_t>(f - in.world.data());
     const bool lets_in_another = letting_in_.count(f->id) != 0 && letting_in_[f->id] != id;
     if (lets_in_another || !(is_cleared(f->id) || in.available[i])) continue;  // an actor, or another play's
+    // One vehicle holds back for each: one that did so before and is no longer just behind it (it
+    // fell back, or another came between) drives on as it likes.
+    for (auto it = letting_in_.begin(); it != letting_in_.end();) {
+      if (it->second != id || it->first == f->id) {
+        ++it;
+        continue;
+      }
+      if (const ObservedVehicle* before = find(in, it->first)) {
+        command(before->id, transported(kOwnDesiredSpeed_mps, before->lane), in.step, out);
+      }
+      it = letting_in_.erase(it);
+    }
     if (!is_cleared(f->id)) {
       cleared_.push_back(f->id);
       in.available[i] = false;
