@@ -87,18 +87,22 @@ ScenarioConfig vary_ego(ScenarioConfig sc, int index, std::uint64_t seed, EgoVar
   return sc;
 }
 
+namespace {
+// Has the ego of `in` reached road position `s_m` (along its direction)?
+bool ego_passed(const StepInput& in, double s_m) { return in.ego.progress_m() >= sign(in.ego.direction) * s_m; }
+}  // namespace
+
 TriggerTimes trigger_times_undirected(const ScenarioConfig& sc, std::uint64_t seed) {
   TriggerTimes t;
-  const PlayConfig play = sc.plays.front();
+  const PlayConfig& play = sc.plays.front();
   ScenarioConfig undirected = sc;
   undirected.plays.clear();
   WindowCores cores(undirected, seed);
-  const auto passed = [&](const StepInput& in, double s_m) { return sign(in.ego.direction) * (in.ego.s_m - s_m) >= 0.0; };
   for (Step k = 0; k <= undirected.steps() && !cores.at_road_end() && t.trigger2_s < 0.0; ++k) {
     StepInput in = cores.next_input();
     const StepOutputs out = cores.compute(in);
-    if (t.trigger1_s < 0.0 && passed(in, play.trigger1_s_m)) t.trigger1_s = in.ego.time_s;
-    if (t.trigger2_s < 0.0 && passed(in, play.trigger2_s_m)) t.trigger2_s = in.ego.time_s;
+    if (t.trigger1_s < 0.0 && ego_passed(in, play.trigger1_s_m)) t.trigger1_s = in.ego.time_s;
+    if (t.trigger2_s < 0.0 && ego_passed(in, play.trigger2_s_m)) t.trigger2_s = in.ego.time_s;
     cores.publish(in, out);
   }
   return t;
@@ -114,20 +118,14 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
   std::set<VehicleId> ego_contacts;
   double first_estimate_s = -1.0;
   bool seen_beyond_trigger2 = false;  // the first report once the ego passed trigger point 2
-  double trigger2_time_s = -1.0;
   const PlayConfig& play = sc.plays.front();
   double end_time_s = -1.0;
   for (Step k = 0; k <= last && !cores.at_road_end(); ++k) {
     StepInput in = cores.next_input();
     const StepOutputs out = cores.compute(in);
     const WindowBounds w = WindowBounds::around(in.ego.s_m, sc.window);
-    if (r.trigger1_time_s < 0.0 && sign(in.ego.direction) * (in.ego.s_m - play.trigger1_s_m) >= 0.0) {
-      r.trigger1_time_s = in.ego.time_s;
-    }
-    if (trigger2_time_s < 0.0 && sign(in.ego.direction) * (in.ego.s_m - play.trigger2_s_m) >= 0.0) {
-      trigger2_time_s = in.ego.time_s;
-      r.trigger2_time_s = trigger2_time_s;
-    }
+    if (r.trigger1_time_s < 0.0 && ego_passed(in, play.trigger1_s_m)) r.trigger1_time_s = in.ego.time_s;
+    if (r.trigger2_time_s < 0.0 && ego_passed(in, play.trigger2_s_m)) r.trigger2_time_s = in.ego.time_s;
     for (const Handoff& h : out.director.births) {
       ++r.created;
       if (w.in_inner(h.vehicle.s_m)) ++r.created_in_view;
@@ -141,11 +139,11 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
       }
       r.final_phase = rep.phase;
       const bool with_errors = rep.phase != director::PlayPhase::kWaiting && rep.phase != director::PlayPhase::kPreparing;
-      if (trigger2_time_s >= 0.0 && r.position_error_at_trigger2_m < 0.0 && with_errors) {
+      if (r.trigger2_time_s >= 0.0 && r.position_error_at_trigger2_m < 0.0 && with_errors) {
         r.position_error_at_trigger2_m = std::abs(rep.position_error_m);
         r.speed_error_at_trigger2_mps = rep.speed_error_mps;
       }
-      if (trigger2_time_s >= 0.0 && !seen_beyond_trigger2) {
+      if (r.trigger2_time_s >= 0.0 && !seen_beyond_trigger2) {
         seen_beyond_trigger2 = true;
         const std::string waiting = "waiting: ";
         const auto at = rep.detail.find(waiting);
@@ -162,7 +160,7 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
       }
       if (rep.phase == director::PlayPhase::kHandedOver) {
         r.handed_over = true;
-        r.handover_wait_s = trigger2_time_s >= 0.0 ? in.ego.time_s - trigger2_time_s : 0.0;
+        r.handover_wait_s = r.trigger2_time_s >= 0.0 ? in.ego.time_s - r.trigger2_time_s : 0.0;
         r.handover_beyond_m = sign(in.ego.direction) * (in.ego.s_m - play.trigger2_s_m);
       }
       if (rep.phase == director::PlayPhase::kFailed) r.failure = rep.detail;

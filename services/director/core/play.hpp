@@ -19,8 +19,8 @@
 
 #include <cstdint>
 #include <map>
-#include <set>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -154,7 +154,7 @@ class PlayRun {
   std::vector<Role> roles_;
   std::map<VehicleId, ActorControl> sent_;  // the last control written to each vehicle held
   std::vector<VehicleId> cleared_;          // vehicles asked to leave a zone
-  std::map<VehicleId, VehicleId> letting_in_;  // a vehicle holding back -> the one it lets in
+  std::map<VehicleId, VehicleId> letting_in_;  // a vehicle let in -> the one holding back for it
   std::set<VehicleId> leaving_zone_;  // cleared vehicles whose last request was to leave a zone
   std::vector<ActorControl> scripted_;      // per role, once handed over
   std::optional<Script> script_;

@@ -247,7 +247,7 @@ const ObservedVehicle* follower_to_let_in(const ObservedVehicle& waiting, int la
   }
   if (nearest == nullptr) return nullptr;
   if (ego.direction == waiting.direction && occupies(ego, ego.direction, lane)) {
-    const double ego_p = sign(ego.direction) * ego.s_m;
+    const double ego_p = ego.progress_m();
     if (ego_p + 0.5 * ego.length_m <= front_p && ego_p > nearest->progress_m()) return nullptr;
   }
   const double gap_m = rear_p - (nearest->progress_m() + 0.5 * nearest->length_m);

@@ -1,0 +1,143 @@
+// The director's zone clearing, a phase of a play's preparation (play.hpp): vehicles that would
+// stand in a clear zone or in an actor's room at the start are asked out, vehicles in an actor's way
+// make way, waiting ones are let in, and shortly before the start the vehicles beside a zone keep
+// their lane. How each vehicle is moved: transport.hpp.
+#include <algorithm>
+#include <cmath>
+
+#include "director/core/play.hpp"
+#include "director/core/transport.hpp"
+
+namespace entourage::director {
+
+namespace {
+// In the last this many seconds before the start, vehicles beside a clear zone (within
+// kBesideZone_m of it, where they will be then) keep their lane.
+constexpr double kHoldLanesBefore_s = 15.0;
+constexpr double kBesideZone_m = 30.0;
+}  // namespace
+
+void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
+                          PlayOutput& out) {
+  const std::vector<ZoneAtStart> zones = zones_of(staged_, in.ego.direction, in.ego.target_lane, aim.ego_s_m, setting_.lanes);
+  // What to clear: the play's zones and the room the actors need at their starts.
+  std::vector<double> lengths;
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
+    const ObservedVehicle* v = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    lengths.push_back(v != nullptr ? v->length_m : in.factory.length_m(std::max(play_.roles[r].type_index, 0)));
+  }
+  std::vector<ZoneAtStart> to_clear = slot_zones(slots, lengths, in.ego.direction);
+  to_clear.insert(to_clear.end(), zones.begin(), zones.end());
+  std::vector<int> role_lanes;
+  for (const Slot& s : slots) {
+    if (s.direction == in.ego.direction) role_lanes.push_back(s.lane);
+  }
+  const ClearingSituation situation{to_clear,   aim.time_s,     in.ego,           aim.ego_s_m,
+                                    role_lanes, setting_.lanes, setting_.director};
+  // Vehicle i, ours from now on, is told to clear out (a cleared one keeps its last command until
+  // the handover); a speed is given with the lead actors get (drive_speed_mps).
+  auto clear = [&](std::size_t i, const Clearance& c, bool off_a_zone) {
+    const ObservedVehicle& v = in.world[i];
+    if (off_a_zone) {
+      leaving_zone_.insert(v.id);
+    } else {
+      leaving_zone_.erase(v.id);
+    }
+    if (!is_cleared(v.id)) {
+      cleared_.push_back(v.id);
+      in.available[i] = false;
+    }
+    double drive_mps = c.speed_mps;
+    if (drive_mps != kOwnDesiredSpeed_mps) {
+      const double type_accel = accel_of(setting_.type_accel_mps2, v.type_index);
+      drive_mps = drive_speed_mps(drive_mps, v.speed_mps, transport_rate_mps2(setting_.director, type_accel), type_accel);
+    }
+    command(v.id, transported(drive_mps, c.lane), in.step, out);
+  };
+  auto ours_or_free = [&](std::size_t i) { return is_cleared(in.world[i].id) || in.available[i]; };  // not an actor
+  for (std::size_t i = 0; i < in.world.size(); ++i) {
+    if (!ours_or_free(i)) continue;
+    if (const auto c = clear_out(in.world[i], situation)) clear(i, *c, true);
+  }
+  // Vehicles in an actor's way to its slot make way where they can.
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
+    const ObservedVehicle* actor = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    if (actor == nullptr) continue;
+    for (std::size_t i = 0; i < in.world.size(); ++i) {
+      if (!ours_or_free(i)) continue;
+      if (const auto c = make_way(in.world[i], slots[r], *actor, roles_[r].command_mps, situation)) clear(i, *c, false);
+    }
+  }
+  let_in(in, out);
+  if (time_to_start_s > kHoldLanesBefore_s) return;
+  // Shortly before the start, vehicles beside a zone keep their lane (at their own speed), so that
+  // none changes into it at the last moment.
+  for (std::size_t i = 0; i < in.world.size(); ++i) {
+    const ObservedVehicle& v = in.world[i];
+    const bool ours = is_cleared(v.id);
+    if (ours || !in.available[i] || v.lane != v.target_lane) continue;
+    const double s_then = s_after_m(v, aim.time_s);
+    const bool beside = std::any_of(zones.begin(), zones.end(), [&](const ZoneAtStart& z) {
+      return z.direction == v.direction && std::abs(v.lane - z.lane) == 1 && s_then > z.from_s_m - kBesideZone_m &&
+             s_then < z.to_s_m + kBesideZone_m;
+    });
+    if (!beside) continue;
+    cleared_.push_back(v.id);
+    in.available[i] = false;
+    command(v.id, transported(kOwnDesiredSpeed_mps, v.lane), in.step, out);
+  }
+}
+
+void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
+  // The lane `id` was asked to change into while it has not started moving there; -1 otherwise.
+  auto waiting_for_lane = [&](VehicleId id) {
+    const auto cmd = sent_.find(id);
+    const ObservedVehicle* v = find(in, id);
+    if (cmd == sent_.end() || v == nullptr || cmd->second.mode != ControlMode::kTransported) return -1;
+    const int lane = cmd->second.lane;
+    const bool waits = lane >= 0 && v->lane == v->target_lane && v->lane != lane && v->indicator != 0;
+    return waits ? lane : -1;
+  };
+  // A vehicle that held back drives on as it likes, in its lane.
+  auto stop_holding_back = [&](VehicleId id) {
+    if (const ObservedVehicle* v = find(in, id)) command(id, transported(kOwnDesiredSpeed_mps, v->lane), in.step, out);
+  };
+  auto holds_back = [&](VehicleId id) {
+    return std::any_of(letting_in_.begin(), letting_in_.end(), [&](const auto& e) { return e.second == id; });
+  };
+  for (auto it = letting_in_.begin(); it != letting_in_.end();) {
+    if (waiting_for_lane(it->first) >= 0) {
+      ++it;
+      continue;
+    }
+    stop_holding_back(it->second);
+    it = letting_in_.erase(it);
+  }
+  const std::vector<VehicleId> cleared = cleared_;
+  for (VehicleId id : cleared) {
+    if (leaving_zone_.count(id) == 0) continue;  // making way for an actor: it may wait
+    const int lane = waiting_for_lane(id);
+    // One holding back for another is not let in itself meanwhile.
+    if (lane < 0 || holds_back(id)) continue;
+    const ObservedVehicle& v = *find(in, id);
+    const ObservedVehicle* f = follower_to_let_in(v, lane, in.world, in.ego);
+    if (f == nullptr) continue;
+    const auto i = static_cast<std::size_t>(f - in.world.data());
+    const auto before = letting_in_.find(id);
+    const bool for_it_already = before != letting_in_.end() && before->second == f->id;
+    if ((holds_back(f->id) && !for_it_already) || !(is_cleared(f->id) || in.available[i])) {
+      continue;  // it lets in another, or it is an actor or another play's
+    }
+    // One vehicle holds back for each: one that did so before and is no longer just behind it (it
+    // fell back, or another came between) drives on as it likes.
+    if (before != letting_in_.end() && !for_it_already) stop_holding_back(before->second);
+    if (!is_cleared(f->id)) {
+      cleared_.push_back(f->id);
+      in.available[i] = false;
+    }
+    letting_in_[id] = f->id;
+    command(f->id, transported(std::max(0.0, v.speed_mps - kLetIn_mps), f->lane), in.step, out);
+  }
+}
+
+}  // namespace entourage::director
