@@ -243,6 +243,7 @@ struct ScenarioConfig {
   FlowConfig forward;
   FlowConfig backward;
   double demand_regulation_gain = 4.0;  // see scenario.proto, Demand.regulation_gain
+  bool demand_regulation_whole_window = false;  // Demand.regulation_counts: the whole window, else the outer regions
   EgoConfig ego;
   std::vector<PlayConfig> plays;
   DirectorConfig director;

@@ -286,6 +286,7 @@ ScenarioConfig resolve(const Scenario& s) {
   c.forward = resolve_flow(s.demand().forward(), s);
   c.backward = resolve_flow(s.demand().backward(), s);
   c.demand_regulation_gain = s.demand().regulation_gain();
+  c.demand_regulation_whole_window = s.demand().regulation_counts() == Demand::WHOLE_WINDOW;
   c.ego = resolve_ego(s.ego());
   std::uint32_t id = 1;
   for (const auto& p : s.play()) c.plays.push_back(resolve_play(p, s, id++));

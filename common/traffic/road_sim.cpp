@@ -94,6 +94,14 @@ void RoadSim::arrive() {
   }
 }
 
+bool RoadSim::redrive(VehicleId id, const DriverParams& driver) {
+  Vehicle* v = fleet_.find(id);
+  if (v == nullptr) return false;
+  v->driver = driver;
+  if (!v->lane_change.active()) v->lane_change.duration_s = driver.lane_change_duration_s;
+  return true;
+}
+
 void RoadSim::perceive() { build_index(index_, fleet_, {}, nullptr); }
 
 void RoadSim::enter(Direction dir) {

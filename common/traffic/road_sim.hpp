@@ -83,6 +83,10 @@ class RoadSim {
   std::size_t queued() const { return queued(Direction::kForward) + queued(Direction::kBackward); }
   const std::vector<Crossing>& crossings(std::size_t detector) const { return crossings_[detector]; }
   const Fleet& fleet() const { return fleet_; }
+  // Gives a vehicle on the road another driver (a bench puts drivers like the ego stand-in into
+  // the stream this way). False if the vehicle is not on the road.
+  bool redrive(VehicleId id, const DriverParams& driver);
+  const DrivingEnvironment& environment() const { return env_; }
   // The vehicles that left the road's end in the last step, as they were when they left.
   const std::vector<Vehicle>& exits() const { return exits_; }
   const StreamModel& demand(Direction d) const { return *source(d).stream; }

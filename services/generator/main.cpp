@@ -36,8 +36,8 @@ int run(const dds::ServiceContext& ctx) {
   const auto& c = core.counters();
   spdlog::info(
       "generated {} vehicles: {} by {} fills ({} left out for lack of room), {} at the edges from {} platoon arrivals "
-      "({} members did not enter, {} platoons dropped, {} still queued)",
-      c.filled + c.placed, c.filled, c.fills, c.fill_skipped, c.placed, c.arrivals, c.not_entered, c.dropped,
+      "({} from behind at their leader's speed, {} platoons dropped, {} still queued)",
+      c.filled + c.placed, c.filled, c.fills, c.fill_skipped, c.placed, c.arrivals, c.at_leader_speed, c.dropped,
       core.queued());
   spdlog::info("front zone: {} vehicles joined it, {} left it far ahead, {} made way for a slow platoon", c.ahead,
                c.left_ahead, c.made_way);

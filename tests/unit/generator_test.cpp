@@ -124,6 +124,10 @@ TEST(Generator, ArrivalsMatchTheMovingObserverRates) {
   const ObservedStream& fwd = g.stream(Direction::kForward);
   const ObservedStream& bwd = g.stream(Direction::kBackward);
   EXPECT_TRUE(within(c.arrivals_at[0], fwd.rate_rear_per_s(u) * hours)) << c.arrivals_at[0];
+  // Every vehicle of a platoon from behind enters, also one the stream's snapshot caught slower
+  // than the window (at its leader's speed); only those still queued at the end are missing.
+  EXPECT_GT(c.at_leader_speed, 0U);
+  EXPECT_LE(c.members_at[0] - c.placed_at[0], 10U) << c.members_at[0] << " " << c.placed_at[0];
   EXPECT_TRUE(within(c.arrivals_at[1], fwd.rate_front_per_s(u) * hours)) << c.arrivals_at[1];
   EXPECT_TRUE(within(c.arrivals_at[2], bwd.rate_oncoming_per_s(u) * hours)) << c.arrivals_at[2];
 }
@@ -145,36 +149,50 @@ TEST(Generator, AStandingEgoGetsTheWholeFlowFromBehind) {
   EXPECT_EQ(c.arrivals_at[1], 0U);
 }
 
-// Regulation: arrivals scaled by 1 + gain (expected - present) / expected, within [0, 1 + gain].
-// The oncoming entrance (the busiest) is counted over ten minutes with the window held empty, at
-// the stream's density and at twice that.
-std::uint64_t oncoming_arrivals(double gain, double density_factor) {
+// Regulation: arrivals scaled by 1 + gain (expected - present) / expected, within [0, 1 + gain],
+// counted over the whole window for the oncoming direction and over the outer regions for the
+// ego's. A direction's arrivals are counted with the window held at a standing world of that
+// direction's vehicles: at the stream's density times `density_factor`, and `inner_factor` times
+// that in the inner region. The oncoming entrance (the busiest) over ten minutes, the ego's
+// direction (both its entrances) over an hour.
+std::uint64_t arrivals(Direction dir, double gain, double density_factor, double inner_factor = 1.0) {
   ScenarioConfig sc = freeway_scenario();
   sc.demand_regulation_gain = gain;
   GeneratorCore g(sc, 21);
-  const double u = 29.0;
+  const double u = dir == Direction::kBackward ? 29.0 : 25.0;
+  const int steps = dir == Direction::kBackward ? 6000 : 36000;
   const WindowBounds w0 = WindowBounds::around(0.0, sc.window);
   const double length = w0.front_edge_m - w0.rear_edge_m;
-  const auto n = static_cast<std::size_t>(std::lround(density_factor * g.stream(Direction::kBackward).density_per_m() * length));
+  const auto n = static_cast<std::size_t>(std::lround(density_factor * g.stream(dir).density_per_m() * length));
   double s = 5000.0;
-  for (int k = 0; k < 6000; ++k) {
+  for (int k = 0; k < steps; ++k) {
     StepInput in;
     in.step = static_cast<Step>(k);
     in.ego = ego_at(in.step, s, u);
     const WindowBounds w = WindowBounds::around(s, sc.window);
-    for (std::size_t i = 0; i < n; ++i) {  // a standing world of oncoming vehicles spread over the window
+    VehicleId id = 1000000;
+    const auto stand = [&](double s_m) {
       ObservedVehicle o;
-      o.id = 1000000 + static_cast<VehicleId>(i);
-      o.direction = Direction::kBackward;
-      o.s_m = w.rear_edge_m + (static_cast<double>(i) + 0.5) * length / static_cast<double>(n);
+      o.id = id++;
+      o.direction = dir;
+      o.s_m = s_m;
       o.speed_mps = 0.0;
       o.length_m = 0.1;
       in.world_prev.push_back(o);
+    };
+    for (std::size_t i = 0; i < n; ++i) {  // a standing world of vehicles spread over the window
+      const double s_m = w.rear_edge_m + (static_cast<double>(i) + 0.5) * length / static_cast<double>(n);
+      stand(s_m);
+      if (w.in_inner(s_m) && inner_factor > 1.0) stand(s_m + 1.0);  // twice as dense there
     }
     g.step(in);
     s += u * sc.step_s;
   }
-  return g.counters().arrivals_at[2];
+  const Counters& c = g.counters();
+  return dir == Direction::kBackward ? c.arrivals_at[2] : c.arrivals_at[0] + c.arrivals_at[1];
+}
+std::uint64_t oncoming_arrivals(double gain, double density_factor, double inner_factor = 1.0) {
+  return arrivals(Direction::kBackward, gain, density_factor, inner_factor);
 }
 
 TEST(Generator, RegulationPullsTheWindowTowardsTheStreamsDensity) {
@@ -185,6 +203,17 @@ TEST(Generator, RegulationPullsTheWindowTowardsTheStreamsDensity) {
   EXPECT_GT(boosted, 3.0 * plain);
   EXPECT_LT(boosted, 5.0 * plain + 5.0 * std::sqrt(5.0 * plain));
   EXPECT_EQ(oncoming_arrivals(4.0, 2.0), 0U);
+}
+
+// Drivers the ego holds up, or that it follows, gather around it: a whole road of traffic holds
+// more vehicles in the inner region than the stream's density says and the stream's density in the
+// outer regions (entourage-bench-catchups). Counting the inner region too cut the arrivals from
+// behind, and with them the catch-ups.
+TEST(Generator, VehiclesGatheredInTheInnerRegionDoNotCutTheArrivals) {
+  const double plain = static_cast<double>(arrivals(Direction::kForward, 0.0, 1.0));
+  EXPECT_NEAR(static_cast<double>(arrivals(Direction::kForward, 4.0, 1.0, 2.0)), plain, 5.0 * std::sqrt(plain));
+  // the outer regions still count: held at twice the density everywhere, nothing arrives
+  EXPECT_EQ(arrivals(Direction::kForward, 4.0, 2.0), 0U);
 }
 
 TEST(Generator, AJumpOfTheEgoRefillsTheWindow) {

@@ -22,6 +22,7 @@ LaneChangeModel ego_lane_changes(const EgoConfig& e, const DrivingEnvironment& e
   if (!e.driver.lane_changes || e.driver.use_speed_profile) return LaneChangeModel::kNone;
   return env.two_way() ? LaneChangeModel::kOvertaking : LaneChangeModel::kMobil;
 }
+}  // namespace
 
 DriverParams ego_driver(const EgoConfig& e, const DrivingEnvironment& env, std::uint64_t seed) {
   DriverParams d;
@@ -37,7 +38,6 @@ DriverParams ego_driver(const EgoConfig& e, const DrivingEnvironment& env, std::
   d.rng_state = Random::derived(seed, kEgoDriverStreamLabel).next_u64();
   return d;
 }
-}  // namespace
 
 EgoCore::EgoCore(const ScenarioConfig& scenario) : EgoCore(scenario, scenario.seed) {}
 

@@ -19,6 +19,11 @@
 
 namespace entourage::ego {
 
+// The stand-in's driver as the scenario's ego block describes it (its desired speed the basic one:
+// a speed profile is applied by the core). Also used to put drivers like it into a whole road of
+// traffic (entourage-bench-catchups).
+DriverParams ego_driver(const EgoConfig& e, const DrivingEnvironment& env, std::uint64_t seed);
+
 class EgoCore {
  public:
   // `seed` seeds the stand-in driver's own decisions (its overtakings); default the scenario's.

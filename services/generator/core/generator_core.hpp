@@ -16,7 +16,8 @@
 //   fill      at the first step or after a jump: a stretch of the observed stream fills the window
 //             and the front zone
 //   arrive    platoon arrivals at each edge join that edge's queue; the rates follow the ego's speed
-//             and are scaled towards the stream's density in the window (regulation)
+//             and are scaled towards the stream's density in the window (regulation: the ego's
+//             direction counted in the outer regions, where the ego gathers nobody)
 //   place     from behind and oncoming, a platoon's vehicles enter one by one at the edge, each
 //             when its lane has room there; from ahead, a slow platoon joins the front zone whole,
 //             its last vehicle just beyond the edge, and enters the window as the edge reaches it
@@ -58,7 +59,7 @@ struct Counters {
   std::uint64_t placed = 0;         // vehicles that entered at the edges
   std::uint64_t waited_steps = 0;   // platoon-steps spent queued at an edge for lack of room
   std::uint64_t dropped = 0;        // platoons dropped from an overfull edge queue
-  std::uint64_t not_entered = 0;    // platoon members that could not enter (too slow, or no room)
+  std::uint64_t at_leader_speed = 0;  // members from behind caught slower than the window, entered at their leader's speed
   std::uint64_t ahead = 0;          // vehicles that joined the front zone
   std::uint64_t left_ahead = 0;     // front-zone vehicles that left far ahead without entering
   std::uint64_t made_way = 0;       // faster front-zone vehicles taken to have passed a slow platoon
@@ -125,8 +126,10 @@ class GeneratorCore {
   Handoff birth(const Vehicle& model, Direction dir, int lane, double progress_m, double speed_mps,
                 const WindowBounds& w, Step step, HandoffReason reason);
   double rate(const EdgeStream& s, double u) const;
-  // Per direction (dir_index), the factor on its arrivals: how far its vehicles in the window are
-  // from the stream's density times the window's length (scenario demand.regulation_gain).
+  // Per direction (dir_index), the factor on its arrivals: how far its vehicles counted (the ego's
+  // direction in the outer regions, the oncoming one in the whole window; scenario
+  // demand.regulation_counts) are from the stream's density times the length counted (scenario
+  // demand.regulation_gain).
   std::array<double, 2> regulation(const StepInput& in) const;
 
   ScenarioConfig scenario_;

@@ -1,0 +1,434 @@
+// entourage-bench-catchups: the ego stand-in's catch-ups in the window against those of the same
+// driver on a whole road of the same demand.
+//
+// The window's validation (entourage verify) counts the vehicles that pass the ego (passive
+// catch-ups) and that it passes (active) and compares them with the moving-observer prediction at
+// the ego's speed (recording/summary.hpp). That prediction holds for an observer the stream passes
+// freely. The ego is one of the stream's vehicles: it is held up in its lane, and the drivers it
+// holds up gather behind it. What the window must reproduce is what that driver meets on a whole
+// road, and this bench measures both:
+//
+//   whole road  the road simulation (traffic/road_sim.hpp) of the scenario's demand on a straight
+//               road, every vehicle an observer over a stretch of it (crossings counted, the same
+//               prediction integrated over its own speed history), and every n-th car given the
+//               ego stand-in's driver (ego/core/ego_core.hpp): their figures are the reference;
+//   window      drives of the window with every core in one process (window_cores.hpp, wired as
+//               the DDS shells wire them), seeds 1..N, counted the same way.
+//
+// For both it prints, per hour, the vehicles crossing the points where the window's edges are
+// (in and out, against the moving-observer rates), the mean number of vehicles of the ego's
+// direction in each region, and the flow in the window (distance driven over length and time).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "cli/args.hpp"
+#include "core/units.hpp"
+#include "ego/core/ego_core.hpp"
+#include "scenario/loader.hpp"
+#include "traffic/observed_stream.hpp"
+#include "traffic/road_sim.hpp"
+#include "window_cores.hpp"
+
+namespace entourage {
+namespace {
+
+struct Options {
+  std::string scenario_path = std::string(ENTOURAGE_SOURCE_DIR) + "/scenarios/freeway.pbtxt";
+  double length_m = 30000.0;
+  double margin_m = 5000.0;
+  double warmup_s = 1200.0;
+  double duration_s = 7200.0;
+  int seed = 1;
+  int ego_every = 20;  // every n-th car entering the whole road drives like the ego stand-in
+  int drives = 0;
+  double drive_s = 1800.0;
+};
+
+// What one observer (a vehicle of the whole road, or the ego of a window drive) met.
+struct Tally {
+  double passive = 0.0;  // crossings: vehicles passing the observer
+  double active = 0.0;   // vehicles the observer passes
+  double predicted_passive = 0.0;
+  double predicted_active = 0.0;
+  double observed_s = 0.0;
+  double distance_m = 0.0;
+  // Vehicles of its direction crossing the points where its window's edges are: in and out at
+  // the rear, in and out at the front (a vehicle born or retired inside counts as crossing).
+  double rear_in = 0.0;
+  double rear_out = 0.0;
+  double front_in = 0.0;
+  double front_out = 0.0;
+  double vehicle_seconds = 0.0;      // vehicles of its direction in the window, over time
+  double rear_outer_seconds = 0.0;   // of those, in the outer region behind
+  double front_outer_seconds = 0.0;  // and ahead
+  double vehicle_metres = 0.0;       // the distance they drove (Edie's flow: over length and time)
+  // Window drives: the oncoming vehicles met, against the prediction, and their distance driven in
+  // the window.
+  double met = 0.0;
+  double predicted_met = 0.0;
+  double oncoming_metres = 0.0;
+
+  void add(const Tally& t) {
+    passive += t.passive;
+    active += t.active;
+    predicted_passive += t.predicted_passive;
+    predicted_active += t.predicted_active;
+    observed_s += t.observed_s;
+    distance_m += t.distance_m;
+    rear_in += t.rear_in;
+    rear_out += t.rear_out;
+    front_in += t.front_in;
+    front_out += t.front_out;
+    vehicle_seconds += t.vehicle_seconds;
+    rear_outer_seconds += t.rear_outer_seconds;
+    front_outer_seconds += t.front_outer_seconds;
+    vehicle_metres += t.vehicle_metres;
+    met += t.met;
+    predicted_met += t.predicted_met;
+    oncoming_metres += t.oncoming_metres;
+  }
+};
+
+double window_length_m(const WindowConfig& w) { return w.inner_behind_m + w.outer_behind_m + w.inner_ahead_m + w.outer_ahead_m; }
+double rear_edge_m(const WindowConfig& w) { return -(w.inner_behind_m + w.outer_behind_m); }
+double front_edge_m(const WindowConfig& w) { return w.inner_ahead_m + w.outer_ahead_m; }
+bool in_window(double rel_m, const WindowConfig& w) { return rel_m >= rear_edge_m(w) && rel_m < front_edge_m(w); }
+
+// The observer's own step: its speed against the stream's moving-observer rates.
+void observe_step(Tally& t, double speed_mps, const ObservedStream& stream, double dt) {
+  const double u = std::max(0.0, speed_mps);
+  t.predicted_passive += stream.vehicles_rear_per_s(u) * dt;
+  t.predicted_active += stream.vehicles_front_per_s(u) * dt;
+  t.observed_s += dt;
+  t.distance_m += u * dt;
+}
+
+// Another vehicle of its direction in the observer's window, `rel_m` ahead of it now (behind if
+// negative) and `before_m` the step before (NaN: not there then).
+void observe_in_window(Tally& t, double before_m, double rel_m, double speed_mps, const WindowConfig& w, double dt) {
+  if (in_window(rel_m, w)) {
+    t.vehicle_seconds += dt;
+    t.vehicle_metres += speed_mps * dt;
+    if (rel_m < -w.inner_behind_m) t.rear_outer_seconds += dt;
+    if (rel_m >= w.inner_ahead_m) t.front_outer_seconds += dt;
+  }
+  if (std::isnan(before_m)) {  // born: in at the nearer edge if inside
+    if (in_window(rel_m, w)) (rel_m < 0.0 ? t.rear_in : t.front_in) += 1.0;
+    return;
+  }
+  const double rear = rear_edge_m(w);
+  const double front = front_edge_m(w);
+  if (before_m < rear && rel_m >= rear) t.rear_in += 1.0;
+  if (before_m >= rear && rel_m < rear) t.rear_out += 1.0;
+  if (before_m >= front && rel_m < front) t.front_in += 1.0;
+  if (before_m < front && rel_m >= front) t.front_out += 1.0;
+}
+
+// A vehicle gone (retired, or off the road's end) whose last position was `before_m`.
+void observe_gone(Tally& t, double before_m, const WindowConfig& w) {
+  if (in_window(before_m, w)) (before_m < 0.0 ? t.rear_out : t.front_out) += 1.0;
+}
+
+struct Observer {
+  std::string group;
+  bool ego_driver = false;
+  Tally tally;
+  std::unordered_map<VehicleId, double> near;  // ego drivers: vehicles near its window, relative position
+};
+
+std::string group_of(const ScenarioConfig& sc, const Vehicle& v) {
+  const double kph = mps_to_kph(v.driver.desired_speed_mps());
+  const int lo = static_cast<int>(kph / 10.0) * 10;
+  char band[64];
+  std::snprintf(band, sizeof band, "%s, wants %d-%d km/h", sc.vehicle_types[v.type_index].name.c_str(), lo, lo + 10);
+  return band;
+}
+
+// The whole road: every forward vehicle an observer while it is between the margins (after the
+// warm-up), crossings found by keeping the vehicles sorted by position (each swap of an insertion
+// sort is one vehicle passing another). The ego drivers also track their window's edges.
+std::unordered_map<VehicleId, Observer> observe_whole_road(const ScenarioConfig& sc, const Options& o) {
+  RoadSimConfig rc;
+  rc.length_m = o.length_m;
+  RoadSim sim(road_sim_scenario(sc, rc), Direction::kForward, rc, static_cast<std::uint64_t>(o.seed));
+  const ObservedStream stream(sc, Direction::kForward, StreamObservation{},
+                              observation_seed(generator_seed(static_cast<std::uint64_t>(o.seed)), Direction::kForward));
+  const double dt = sc.step_s;
+  const WindowConfig& w = sc.window;
+  std::unordered_map<VehicleId, Observer> observers;
+  std::vector<VehicleId> order;  // forward vehicles by increasing s
+  std::unordered_map<VehicleId, const Vehicle*> on_road;
+  const auto s_of = [&](VehicleId id) { return on_road.at(id)->s_m; };
+  const auto counting = [&](double s) { return sim.time_s() >= o.warmup_s && s >= o.margin_m && s < o.length_m - o.margin_m; };
+  int cars = 0;
+  const auto steps = static_cast<long>((o.warmup_s + o.duration_s) / dt);
+  for (long i = 0; i < steps; ++i) {
+    sim.step();
+    on_road.clear();
+    for (const Vehicle& v : sim.fleet().vehicles()) {
+      if (v.direction != Direction::kForward) continue;
+      on_road[v.id] = &v;
+      auto [it, fresh] = observers.try_emplace(v.id);
+      if (fresh) {
+        it->second.group = group_of(sc, v);
+        order.insert(order.begin(), v.id);  // a new vehicle enters at the rear
+        if (!sc.vehicle_types[v.type_index].keep_right && ++cars % o.ego_every == 0) {
+          sim.redrive(v.id, ego::ego_driver(sc.ego, sim.environment(), static_cast<std::uint64_t>(cars)));
+          it->second.group = "the ego stand-in's driver";
+          it->second.ego_driver = true;
+        }
+      }
+      if (counting(v.s_m)) observe_step(it->second.tally, v.speed_mps, stream, dt);
+    }
+    order.erase(std::remove_if(order.begin(), order.end(), [&](VehicleId id) { return !on_road.count(id); }), order.end());
+    for (std::size_t j = 1; j < order.size(); ++j) {
+      for (std::size_t k = j; k > 0 && s_of(order[k]) < s_of(order[k - 1]); --k) {
+        const VehicleId passed = order[k];      // was ahead, is now behind
+        const VehicleId passer = order[k - 1];  // was behind, is now ahead
+        if (counting(s_of(passed))) observers[passed].tally.passive += 1.0;
+        if (counting(s_of(passer))) observers[passer].tally.active += 1.0;
+        std::swap(order[k], order[k - 1]);
+      }
+    }
+    for (auto& [id, ob] : observers) {
+      if (!ob.ego_driver || !on_road.count(id)) continue;
+      const double s_ego = s_of(id);
+      const bool count = counting(s_ego);
+      std::unordered_map<VehicleId, double> now;
+      auto first = std::lower_bound(order.begin(), order.end(), s_ego + rear_edge_m(w) - 200.0,
+                                    [&](VehicleId v, double x) { return s_of(v) < x; });
+      for (auto v = first; v != order.end() && s_of(*v) < s_ego + front_edge_m(w) + 200.0; ++v) {
+        if (*v == id) continue;
+        const double rel = s_of(*v) - s_ego;
+        now[*v] = rel;
+        auto b = ob.near.find(*v);
+        if (count) observe_in_window(ob.tally, b == ob.near.end() ? std::nan("") : b->second, rel, on_road.at(*v)->speed_mps, w, dt);
+      }
+      ob.near = std::move(now);
+    }
+  }
+  return observers;
+}
+
+// One drive of the window: the ego stand-in counted as the recording's summary counts it (a vehicle
+// of its direction whose position relative to the ego changes sign between two steps), the same
+// prediction, from the stream the drive's generator observed.
+// The initial fill reaches the regions a step after the generator placed it: counting starts after
+// it has settled, or its vehicles would count as born inside the window.
+constexpr Step kFillSteps = 10;
+
+Tally window_drive(const ScenarioConfig& sc, std::uint64_t seed, double duration_s) {
+  Tally t;
+  bench::WindowCores cores(sc, seed);
+  const ObservedStream stream(sc, Direction::kForward, StreamObservation{},
+                              observation_seed(generator_seed(seed), Direction::kForward));
+  const ObservedStream oncoming(sc, Direction::kBackward, StreamObservation{},
+                                observation_seed(generator_seed(seed), Direction::kBackward));
+  std::unordered_map<VehicleId, double> before;
+  std::unordered_map<VehicleId, double> now;
+  std::unordered_map<VehicleId, bool> forward;  // ids of the ego's direction (by id: a gone vehicle's)
+  const auto steps = static_cast<Step>(duration_s / sc.step_s);
+  for (Step k = 0; k <= steps && !cores.at_road_end(); ++k) {
+    StepInput in = cores.next_input();
+    const bench::StepOutputs out = cores.compute(in);
+    cores.publish(in, out);
+    now.clear();
+    for (const ObservedVehicle& v : cores.world()) {
+      now[v.id] = v.s_m - in.ego.s_m;
+      if (v.direction == Direction::kForward) forward[v.id] = true;
+    }
+    if (k >= kFillSteps) {
+      observe_step(t, in.ego.speed_mps, stream, sc.step_s);
+      t.predicted_met += oncoming.vehicles_oncoming_per_s(std::max(0.0, in.ego.speed_mps)) * sc.step_s;
+      for (const ObservedVehicle& v : cores.world()) {
+        if (v.direction != Direction::kBackward) continue;
+        auto b = before.find(v.id);
+        if (b != before.end() && b->second >= 0.0 && now[v.id] < 0.0) t.met += 1.0;
+        if (in_window(now[v.id], sc.window)) t.oncoming_metres += v.speed_mps * sc.step_s;
+      }
+      for (const ObservedVehicle& v : cores.world()) {
+        if (v.direction != Direction::kForward) continue;
+        auto b = before.find(v.id);
+        const double rel = now[v.id];
+        if (b != before.end() && b->second < 0.0 && rel >= 0.0) t.passive += 1.0;
+        if (b != before.end() && b->second >= 0.0 && rel < 0.0) t.active += 1.0;
+        observe_in_window(t, b == before.end() ? std::nan("") : b->second, rel, v.speed_mps, sc.window, sc.step_s);
+      }
+      for (const auto& [id, rel] : before) {
+        if (!now.count(id) && forward.count(id)) observe_gone(t, rel, sc.window);
+      }
+    }
+    std::swap(before, now);
+  }
+  return t;
+}
+
+// Ratio of a sum of counts to a sum of predictions, with its standard error from the spread of
+// the units (drives or observers) about the pooled ratio.
+struct Ratio {
+  double value = 0.0;
+  double error = 0.0;
+};
+Ratio pooled_ratio(const std::vector<std::pair<double, double>>& observed_predicted) {
+  double o = 0.0;
+  double p = 0.0;
+  for (const auto& [oi, pi] : observed_predicted) {
+    o += oi;
+    p += pi;
+  }
+  Ratio r;
+  if (p <= 0.0) return r;
+  r.value = o / p;
+  double squares = 0.0;
+  for (const auto& [oi, pi] : observed_predicted) squares += (oi - r.value * pi) * (oi - r.value * pi);
+  const double n = static_cast<double>(observed_predicted.size());
+  r.error = n > 1.0 ? std::sqrt(squares * n / (n - 1.0)) / p : 0.0;
+  return r;
+}
+
+struct Pooled {
+  Tally total;
+  std::vector<std::pair<double, double>> passive;  // per unit: observed, predicted
+  std::vector<std::pair<double, double>> active;
+  void add(const Tally& t) {
+    total.add(t);
+    passive.emplace_back(t.passive, t.predicted_passive);
+    active.emplace_back(t.active, t.predicted_active);
+  }
+};
+
+void print_group(const std::string& label, const Tally& t, std::size_t observers) {
+  const double km = t.distance_m / 1000.0;
+  if (km <= 0.0) return;
+  std::printf("  %-28s %6zu %8.0f  passive %5.2f/km of %5.2f (%.2f)  active %5.2f/km of %5.2f (%.2f)\n", label.c_str(),
+              observers, km, t.passive / km, t.predicted_passive / km,
+              t.predicted_passive > 0.0 ? t.passive / t.predicted_passive : 0.0, t.active / km,
+              t.predicted_active / km, t.predicted_active > 0.0 ? t.active / t.predicted_active : 0.0);
+}
+
+// The pooled figures of the ego stand-in's driver (on the whole road or in the window).
+void print_ego(const char* label, const Pooled& p, const ScenarioConfig& sc, double demand_veh_per_s, double density_per_m) {
+  const Tally& t = p.total;
+  if (t.observed_s <= 0.0) return;
+  const Ratio passive = pooled_ratio(p.passive);
+  const Ratio active = pooled_ratio(p.active);
+  const WindowConfig& w = sc.window;
+  const double h = t.observed_s / 3600.0;
+  std::printf("%s: %zu, %.0f km at %.1f km/h\n", label, p.passive.size(), t.distance_m / 1000.0,
+              mps_to_kph(t.distance_m / t.observed_s));
+  std::printf("  catch-ups against the moving-observer prediction: passive %.2f +- %.2f, active %.2f +- %.2f\n",
+              passive.value, passive.error, active.value, active.error);
+  std::printf("  per hour at the rear edge: in %.1f, out %.1f (moving-observer rate %.1f); at the front edge: in "
+              "%.1f, out %.1f (rate %.1f)\n",
+              t.rear_in / h, t.rear_out / h, t.predicted_passive / h, t.front_in / h, t.front_out / h,
+              t.predicted_active / h);
+  const double inner = (t.vehicle_seconds - t.rear_outer_seconds - t.front_outer_seconds) / t.observed_s;
+  std::printf("  vehicles of its direction in the window: %.1f (outer behind %.1f, inner %.1f, outer ahead %.1f; the "
+              "stream's density gives %.1f, %.1f, %.1f)\n",
+              t.vehicle_seconds / t.observed_s, t.rear_outer_seconds / t.observed_s, inner,
+              t.front_outer_seconds / t.observed_s, density_per_m * w.outer_behind_m,
+              density_per_m * (w.inner_behind_m + w.inner_ahead_m), density_per_m * w.outer_ahead_m);
+  const double flow = t.vehicle_metres / (window_length_m(w) * t.observed_s);
+  std::printf("  flow of its direction in the window: %.0f veh/h, %+.1f %% of the demand\n", per_second_to_per_hour(flow),
+              100.0 * (flow / demand_veh_per_s - 1.0));
+}
+
+int check_options(const Options& o) {
+  const auto bad = [](const char* what) {
+    std::fprintf(stderr, "entourage-bench-catchups: %s\n", what);
+    return 2;
+  };
+  if (!(o.length_m > 2.0 * o.margin_m + 1000.0) || !(o.margin_m >= 0.0)) {
+    return bad("--length must exceed twice --margin by a kilometre at least, --margin must be >= 0");
+  }
+  if (!(o.warmup_s >= 0.0) || !(o.duration_s > 0.0)) return bad("--warmup must be >= 0 and --duration > 0 seconds");
+  if (o.ego_every < 1) return bad("--ego-every must be >= 1");
+  if (o.drives < 0 || !(o.drive_s > 0.0)) return bad("--drives must be >= 0 and --drive-duration > 0 seconds");
+  return 0;
+}
+
+}  // namespace
+}  // namespace entourage
+
+int main(int argc, char** argv) {
+  using namespace entourage;
+  Options o;
+  cli::Args args("entourage-bench-catchups",
+                 "The ego stand-in's catch-ups in the window against those of the same driver on a whole road of the "
+                 "same demand (no window), both against the moving-observer prediction; with the crossings at the "
+                 "window's edges, the vehicles in each region and the flow in the window.");
+  args.option("scenario", "FILE", "demand, drivers, ego and window (default scenarios/freeway.pbtxt)", &o.scenario_path);
+  args.option("length", "M", "whole road: length of the straight road (default 30000)", &o.length_m);
+  args.option("margin", "M", "whole road: observers count from this far past the entrance to this far before the end "
+              "(default 5000)", &o.margin_m);
+  args.option("warmup", "S", "whole road: time before counting (default 1200)", &o.warmup_s);
+  args.option("duration", "S", "whole road: counted time (default 7200)", &o.duration_s);
+  args.option("seed", "N", "whole road: seed (default 1)", &o.seed);
+  args.option("ego-every", "N", "whole road: every N-th car drives like the ego stand-in (default 20)", &o.ego_every);
+  args.option("drives", "N", "window drives, seeds 1..N (default 0)", &o.drives);
+  args.option("drive-duration", "S", "simulated time of each window drive (default 1800)", &o.drive_s);
+  if (const auto rc = args.parse_or_exit(argc, argv)) return *rc;
+  if (const int rc = check_options(o)) return rc;
+  const auto loaded = scenario::load_file(o.scenario_path);
+  if (!loaded.ok()) {
+    for (const auto& p : loaded.problems) std::fprintf(stderr, "%s\n", p.to_string().c_str());
+    return 2;
+  }
+  const ScenarioConfig& sc = loaded.config;
+  const ObservedStream stream(sc, Direction::kForward, StreamObservation{},
+                              observation_seed(generator_seed(static_cast<std::uint64_t>(o.seed)), Direction::kForward));
+  const double demand = stream.flow_veh_per_s();
+
+  std::printf("whole road: %s demand, %.0f km straight road, seed %d, %.0f s counted after %.0f s, observers between "
+              "%.0f and %.0f m, every %d-th car the ego stand-in's driver\n",
+              sc.name.c_str(), o.length_m / 1000.0, o.seed, o.duration_s, o.warmup_s, o.margin_m,
+              o.length_m - o.margin_m, o.ego_every);
+  std::printf("  %-28s %6s %8s  per km of the observer's travel, observed of predicted (ratio)\n", "observer", "n", "km");
+  const auto observers = observe_whole_road(sc, o);
+  std::map<std::string, std::pair<Tally, std::size_t>> groups;
+  Pooled road_egos;
+  for (const auto& [id, ob] : observers) {
+    if (ob.tally.observed_s <= 0.0) continue;
+    auto& g = groups[ob.group];
+    g.first.add(ob.tally);
+    ++g.second;
+    if (ob.ego_driver) road_egos.add(ob.tally);
+  }
+  for (const auto& [label, g] : groups) print_group(label, g.first, g.second);
+  print_ego("the ego stand-in's drivers on the whole road", road_egos, sc, demand, stream.density_per_m());
+  if (o.drives == 0) return 0;
+
+  Pooled window;
+  for (int d = 1; d <= o.drives; ++d) {
+    const Tally t = window_drive(sc, static_cast<std::uint64_t>(d), o.drive_s);
+    window.add(t);
+    std::printf("  window drive, seed %3d: %5.1f km at %5.1f km/h, passive %4.0f of %6.1f, active %4.0f of %6.1f\n", d,
+                t.distance_m / 1000.0, mps_to_kph(t.distance_m / std::max(1.0, t.observed_s)), t.passive,
+                t.predicted_passive, t.active, t.predicted_active);
+    std::fflush(stdout);
+  }
+  print_ego("the ego stand-in's window drives", window, sc, demand, stream.density_per_m());
+  const ObservedStream oncoming(sc, Direction::kBackward, StreamObservation{},
+                                observation_seed(generator_seed(static_cast<std::uint64_t>(o.seed)), Direction::kBackward));
+  const Tally& wt = window.total;
+  if (wt.observed_s > 0.0 && oncoming.flow_veh_per_s() > 0.0) {
+    const double flow = wt.oncoming_metres / (window_length_m(sc.window) * wt.observed_s);
+    std::printf("  oncoming: met %.0f of %.1f predicted (%.3f); flow in the window %.0f veh/h, %+.1f %% of the demand\n",
+                wt.met, wt.predicted_met, wt.met / wt.predicted_met, per_second_to_per_hour(flow),
+                100.0 * (flow / oncoming.flow_veh_per_s() - 1.0));
+  }
+  const Ratio road_p = pooled_ratio(road_egos.passive);
+  const Ratio road_a = pooled_ratio(road_egos.active);
+  const Ratio win_p = pooled_ratio(window.passive);
+  const Ratio win_a = pooled_ratio(window.active);
+  if (road_p.value > 0.0 && road_a.value > 0.0) {
+    std::printf("window against the whole road: passive %.2f, active %.2f\n", win_p.value / road_p.value,
+                win_a.value / road_a.value);
+  }
+  return 0;
+}
