@@ -306,9 +306,18 @@ OvertakingSituation overtaking_situation(const Vehicle& v, const PassChain& chai
   s.leader_speed_mps = chain.speed_mps;
   s.leader_length_m = chain.length_m;
   s.room_ahead_of_leader_m = chain.room_ahead_m;
-  if (const Occupant* o = index.oncoming(v.direction, env.lanes(v.direction), v.progress_m())) {
-    s.oncoming_distance_m = std::max(0.0, oncoming_gap(*o, v.progress_m(), v.length_m));
-    s.oncoming_speed_mps = o->speed_mps;
+  // The nearest oncoming vehicle in the lane of the pass, or in the own lane: one passing there
+  // moves back into its lane, the lane of the pass, before we would meet it. (Two passes started
+  // towards each other, each in the other's lane, blocked each other's way back, and the aborting
+  // drivers stopped face to face.)
+  for (const int lane : {env.lanes(v.direction), own_lane(v, env)}) {
+    const Occupant* o = index.oncoming(v.direction, lane, v.progress_m());
+    if (o == nullptr) continue;
+    const double distance_m = std::max(0.0, oncoming_gap(*o, v.progress_m(), v.length_m));
+    if (distance_m < s.oncoming_distance_m) {
+      s.oncoming_distance_m = distance_m;
+      s.oncoming_speed_mps = o->speed_mps;
+    }
   }
   s.sight_distance_m = env.ahead().sight_distance_m(v.direction, v.s_m);
   s.restriction_free_m = env.ahead().restriction_free_m(v.direction, v.s_m);

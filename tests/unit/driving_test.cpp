@@ -145,6 +145,22 @@ TEST(Overtaking, RejectedWhileAnOncomingCarIsClose) {
   EXPECT_EQ(w.get(1).overtaking.started, 0U);
 }
 
+// An oncoming vehicle passing in our own lane will move back into its lane, the one we would pass
+// in: it counts as oncoming traffic there. Two passes started towards each other, each in the
+// other's lane, blocked each other's way back; on a whole rural road (entourage-bench-catchups,
+// seed 3) the aborting overtakers stopped face to face and the road locked up for good.
+TEST(Overtaking, RejectedWhileAnOncomingOvertakerIsInItsOwnLane) {
+  MiniWorld w(rural());
+  w.vehicles.push_back(car(1, Direction::kForward, 0, 1000.0, 16.0, 25.0, LaneChangeModel::kOvertaking));
+  w.vehicles.push_back(truck(2, Direction::kForward, 1030.0, 16.0));
+  w.vehicles.push_back(car(3, Direction::kBackward, 1, 1350.0, 25.0, 25.0, LaneChangeModel::kNone));
+  for (int i = 0; i < 40; ++i) {
+    w.step();
+    EXPECT_EQ(w.get(1).target_lane(), 0) << "t = " << w.t();
+  }
+  EXPECT_EQ(w.get(1).overtaking.started, 0U);
+}
+
 TEST(Overtaking, AbortsWhenAnOncomingCarAppearsAndReturnsBehindWithoutAHeadOnCollision) {
   MiniWorld w(rural());
   w.vehicles.push_back(car(1, Direction::kForward, 0, 1000.0, 18.0, 25.0, LaneChangeModel::kOvertaking));
