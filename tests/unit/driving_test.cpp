@@ -133,11 +133,13 @@ TEST(Overtaking, PassesASlowTruckOnAnEmptyRoadAndReturns) {
   EXPECT_GT(top_speed, 25.0);  // may exceed its desired speed while passing
 }
 
-TEST(Overtaking, RejectedWhileAnOncomingCarIsClose) {
+// A car close behind a slow truck, and an oncoming car in `oncoming_lane` (0: its own lane, 1: the
+// car's): over four seconds the car never moves out to pass.
+void expect_no_pass_with_oncoming_car_in(int oncoming_lane) {
   MiniWorld w(rural());
   w.vehicles.push_back(car(1, Direction::kForward, 0, 1000.0, 16.0, 25.0, LaneChangeModel::kOvertaking));
   w.vehicles.push_back(truck(2, Direction::kForward, 1030.0, 16.0));
-  w.vehicles.push_back(car(3, Direction::kBackward, 0, 1350.0, 25.0, 25.0, LaneChangeModel::kNone));
+  w.vehicles.push_back(car(3, Direction::kBackward, oncoming_lane, 1350.0, 25.0, 25.0, LaneChangeModel::kNone));
   for (int i = 0; i < 40; ++i) {
     w.step();
     EXPECT_EQ(w.get(1).target_lane(), 0) << "t = " << w.t();
@@ -145,21 +147,13 @@ TEST(Overtaking, RejectedWhileAnOncomingCarIsClose) {
   EXPECT_EQ(w.get(1).overtaking.started, 0U);
 }
 
+TEST(Overtaking, RejectedWhileAnOncomingCarIsClose) { expect_no_pass_with_oncoming_car_in(0); }
+
 // An oncoming vehicle passing in our own lane will move back into its lane, the one we would pass
 // in: it counts as oncoming traffic there. Two passes started towards each other, each in the
 // other's lane, blocked each other's way back; on a whole rural road (entourage-bench-catchups,
 // seed 3) the aborting overtakers stopped face to face and the road locked up for good.
-TEST(Overtaking, RejectedWhileAnOncomingOvertakerIsInItsOwnLane) {
-  MiniWorld w(rural());
-  w.vehicles.push_back(car(1, Direction::kForward, 0, 1000.0, 16.0, 25.0, LaneChangeModel::kOvertaking));
-  w.vehicles.push_back(truck(2, Direction::kForward, 1030.0, 16.0));
-  w.vehicles.push_back(car(3, Direction::kBackward, 1, 1350.0, 25.0, 25.0, LaneChangeModel::kNone));
-  for (int i = 0; i < 40; ++i) {
-    w.step();
-    EXPECT_EQ(w.get(1).target_lane(), 0) << "t = " << w.t();
-  }
-  EXPECT_EQ(w.get(1).overtaking.started, 0U);
-}
+TEST(Overtaking, RejectedWhileAnOncomingOvertakerIsInItsOwnLane) { expect_no_pass_with_oncoming_car_in(1); }
 
 TEST(Overtaking, AbortsWhenAnOncomingCarAppearsAndReturnsBehindWithoutAHeadOnCollision) {
   MiniWorld w(rural());
