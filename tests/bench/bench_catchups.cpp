@@ -24,11 +24,13 @@
 #include <map>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "cli/args.hpp"
 #include "core/units.hpp"
 #include "ego/core/ego_core.hpp"
+#include "road/window.hpp"
 #include "scenario/loader.hpp"
 #include "traffic/observed_stream.hpp"
 #include "traffic/road_sim.hpp"
@@ -94,10 +96,13 @@ struct Tally {
   }
 };
 
-double window_length_m(const WindowConfig& w) { return w.inner_behind_m + w.outer_behind_m + w.inner_ahead_m + w.outer_ahead_m; }
-double rear_edge_m(const WindowConfig& w) { return -(w.inner_behind_m + w.outer_behind_m); }
-double front_edge_m(const WindowConfig& w) { return w.inner_ahead_m + w.outer_ahead_m; }
-bool in_window(double rel_m, const WindowConfig& w) { return rel_m >= rear_edge_m(w) && rel_m < front_edge_m(w); }
+// The window's edges and regions relative to the observer (its position 0).
+WindowBounds relative_window(const WindowConfig& w) { return WindowBounds::around(0.0, w); }
+double window_length_m(const WindowConfig& w) {
+  const WindowBounds b = relative_window(w);
+  return b.front_edge_m - b.rear_edge_m;
+}
+bool in_window(double rel_m, const WindowBounds& b) { return rel_m >= b.rear_edge_m && rel_m < b.front_edge_m; }
 
 // The observer's own step: its speed against the stream's moving-observer rates.
 void observe_step(Tally& t, double speed_mps, const ObservedStream& stream, double dt) {
@@ -110,19 +115,19 @@ void observe_step(Tally& t, double speed_mps, const ObservedStream& stream, doub
 
 // Another vehicle of its direction in the observer's window, `rel_m` ahead of it now (behind if
 // negative) and `before_m` the step before (NaN: not there then).
-void observe_in_window(Tally& t, double before_m, double rel_m, double speed_mps, const WindowConfig& w, double dt) {
+void observe_in_window(Tally& t, double before_m, double rel_m, double speed_mps, const WindowBounds& w, double dt) {
   if (in_window(rel_m, w)) {
     t.vehicle_seconds += dt;
     t.vehicle_metres += speed_mps * dt;
-    if (rel_m < -w.inner_behind_m) t.rear_outer_seconds += dt;
-    if (rel_m >= w.inner_ahead_m) t.front_outer_seconds += dt;
+    if (rel_m < w.inner_rear_m) t.rear_outer_seconds += dt;
+    if (rel_m >= w.inner_front_m) t.front_outer_seconds += dt;
   }
   if (std::isnan(before_m)) {  // born: in at the nearer edge if inside
     if (in_window(rel_m, w)) (rel_m < 0.0 ? t.rear_in : t.front_in) += 1.0;
     return;
   }
-  const double rear = rear_edge_m(w);
-  const double front = front_edge_m(w);
+  const double rear = w.rear_edge_m;
+  const double front = w.front_edge_m;
   if (before_m < rear && rel_m >= rear) t.rear_in += 1.0;
   if (before_m >= rear && rel_m < rear) t.rear_out += 1.0;
   if (before_m >= front && rel_m < front) t.front_in += 1.0;
@@ -130,7 +135,7 @@ void observe_in_window(Tally& t, double before_m, double rel_m, double speed_mps
 }
 
 // A vehicle gone (retired, or off the road's end) whose last position was `before_m`.
-void observe_gone(Tally& t, double before_m, const WindowConfig& w) {
+void observe_gone(Tally& t, double before_m, const WindowBounds& w) {
   if (in_window(before_m, w)) (before_m < 0.0 ? t.rear_out : t.front_out) += 1.0;
 }
 
@@ -159,8 +164,9 @@ std::unordered_map<VehicleId, Observer> observe_whole_road(const ScenarioConfig&
   const ObservedStream stream(sc, Direction::kForward, StreamObservation{},
                               observation_seed(generator_seed(static_cast<std::uint64_t>(o.seed)), Direction::kForward));
   const double dt = sc.step_s;
-  const WindowConfig& w = sc.window;
+  const WindowBounds w = relative_window(sc.window);
   std::unordered_map<VehicleId, Observer> observers;
+  std::vector<VehicleId> ego_drivers;  // those on the road
   std::vector<VehicleId> order;  // forward vehicles by increasing s
   std::unordered_map<VehicleId, const Vehicle*> on_road;
   const auto s_of = [&](VehicleId id) { return on_road.at(id)->s_m; };
@@ -181,11 +187,14 @@ std::unordered_map<VehicleId, Observer> observe_whole_road(const ScenarioConfig&
           sim.redrive(v.id, ego::ego_driver(sc.ego, sim.environment(), static_cast<std::uint64_t>(cars)));
           it->second.group = "the ego stand-in's driver";
           it->second.ego_driver = true;
+          ego_drivers.push_back(v.id);
         }
       }
       if (counting(v.s_m)) observe_step(it->second.tally, v.speed_mps, stream, dt);
     }
-    order.erase(std::remove_if(order.begin(), order.end(), [&](VehicleId id) { return !on_road.count(id); }), order.end());
+    const auto gone = [&](VehicleId id) { return !on_road.count(id); };
+    order.erase(std::remove_if(order.begin(), order.end(), gone), order.end());
+    ego_drivers.erase(std::remove_if(ego_drivers.begin(), ego_drivers.end(), gone), ego_drivers.end());
     for (std::size_t j = 1; j < order.size(); ++j) {
       for (std::size_t k = j; k > 0 && s_of(order[k]) < s_of(order[k - 1]); --k) {
         const VehicleId passed = order[k];      // was ahead, is now behind
@@ -195,14 +204,14 @@ std::unordered_map<VehicleId, Observer> observe_whole_road(const ScenarioConfig&
         std::swap(order[k], order[k - 1]);
       }
     }
-    for (auto& [id, ob] : observers) {
-      if (!ob.ego_driver || !on_road.count(id)) continue;
+    for (const VehicleId id : ego_drivers) {
+      Observer& ob = observers[id];
       const double s_ego = s_of(id);
       const bool count = counting(s_ego);
       std::unordered_map<VehicleId, double> now;
-      auto first = std::lower_bound(order.begin(), order.end(), s_ego + rear_edge_m(w) - 200.0,
+      auto first = std::lower_bound(order.begin(), order.end(), s_ego + w.rear_edge_m - 200.0,
                                     [&](VehicleId v, double x) { return s_of(v) < x; });
-      for (auto v = first; v != order.end() && s_of(*v) < s_ego + front_edge_m(w) + 200.0; ++v) {
+      for (auto v = first; v != order.end() && s_of(*v) < s_ego + w.front_edge_m + 200.0; ++v) {
         if (*v == id) continue;
         const double rel = s_of(*v) - s_ego;
         now[*v] = rel;
@@ -215,13 +224,14 @@ std::unordered_map<VehicleId, Observer> observe_whole_road(const ScenarioConfig&
   return observers;
 }
 
-// One drive of the window: the ego stand-in counted as the recording's summary counts it (a vehicle
-// of its direction whose position relative to the ego changes sign between two steps), the same
-// prediction, from the stream the drive's generator observed.
 // The initial fill reaches the regions a step after the generator placed it: counting starts after
 // it has settled, or its vehicles would count as born inside the window.
 constexpr Step kFillSteps = 10;
 
+// One drive of the window: the ego stand-in counted as the recording's summary counts it (a vehicle
+// of its direction whose position relative to the ego changes sign between two steps; an oncoming
+// one is met when its position does), the same prediction, from the streams the drive's generator
+// observed.
 Tally window_drive(const ScenarioConfig& sc, std::uint64_t seed, double duration_s) {
   Tally t;
   bench::WindowCores cores(sc, seed);
@@ -229,9 +239,10 @@ Tally window_drive(const ScenarioConfig& sc, std::uint64_t seed, double duration
                               observation_seed(generator_seed(seed), Direction::kForward));
   const ObservedStream oncoming(sc, Direction::kBackward, StreamObservation{},
                                 observation_seed(generator_seed(seed), Direction::kBackward));
+  const WindowBounds w = relative_window(sc.window);
   std::unordered_map<VehicleId, double> before;
   std::unordered_map<VehicleId, double> now;
-  std::unordered_map<VehicleId, bool> forward;  // ids of the ego's direction (by id: a gone vehicle's)
+  std::unordered_set<VehicleId> forward;  // ids of the ego's direction (a gone vehicle's too)
   const auto steps = static_cast<Step>(duration_s / sc.step_s);
   for (Step k = 0; k <= steps && !cores.at_road_end(); ++k) {
     StepInput in = cores.next_input();
@@ -240,27 +251,26 @@ Tally window_drive(const ScenarioConfig& sc, std::uint64_t seed, double duration
     now.clear();
     for (const ObservedVehicle& v : cores.world()) {
       now[v.id] = v.s_m - in.ego.s_m;
-      if (v.direction == Direction::kForward) forward[v.id] = true;
+      if (v.direction == Direction::kForward) forward.insert(v.id);
     }
     if (k >= kFillSteps) {
       observe_step(t, in.ego.speed_mps, stream, sc.step_s);
       t.predicted_met += oncoming.vehicles_oncoming_per_s(std::max(0.0, in.ego.speed_mps)) * sc.step_s;
       for (const ObservedVehicle& v : cores.world()) {
-        if (v.direction != Direction::kBackward) continue;
-        auto b = before.find(v.id);
-        if (b != before.end() && b->second >= 0.0 && now[v.id] < 0.0) t.met += 1.0;
-        if (in_window(now[v.id], sc.window)) t.oncoming_metres += v.speed_mps * sc.step_s;
-      }
-      for (const ObservedVehicle& v : cores.world()) {
-        if (v.direction != Direction::kForward) continue;
-        auto b = before.find(v.id);
+        const auto b = before.find(v.id);
+        const bool was = b != before.end();
         const double rel = now[v.id];
-        if (b != before.end() && b->second < 0.0 && rel >= 0.0) t.passive += 1.0;
-        if (b != before.end() && b->second >= 0.0 && rel < 0.0) t.active += 1.0;
-        observe_in_window(t, b == before.end() ? std::nan("") : b->second, rel, v.speed_mps, sc.window, sc.step_s);
+        if (v.direction == Direction::kBackward) {
+          if (was && b->second >= 0.0 && rel < 0.0) t.met += 1.0;
+          if (in_window(rel, w)) t.oncoming_metres += v.speed_mps * sc.step_s;
+          continue;
+        }
+        if (was && b->second < 0.0 && rel >= 0.0) t.passive += 1.0;
+        if (was && b->second >= 0.0 && rel < 0.0) t.active += 1.0;
+        observe_in_window(t, was ? b->second : std::nan(""), rel, v.speed_mps, w, sc.step_s);
       }
       for (const auto& [id, rel] : before) {
-        if (!now.count(id) && forward.count(id)) observe_gone(t, rel, sc.window);
+        if (!now.count(id) && forward.count(id)) observe_gone(t, rel, w);
       }
     }
     std::swap(before, now);
