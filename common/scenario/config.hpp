@@ -230,6 +230,8 @@ struct DirectorConfig {
   double max_jerk_mps3 = 2.0;           // actors' acceleration rises no faster than this
   double lane_change_cost_mps = 2.0;    // casting: cost of each lane change, as a speed change
   double hidden_margin_m = 50.0;        // created vehicles: at least this far beyond the inner region
+  double beside_wait_ahead_m = 50.0;    // transport: a role beside the ego waits this far ahead of its start
+  double beside_approach_s = 20.0;      // transport: ... until this long before the start
 };
 
 struct ScenarioConfig {

@@ -259,6 +259,8 @@ DirectorConfig resolve_director(const Director& d) {
   c.max_jerk_mps3 = d.max_jerk_mps3();
   c.lane_change_cost_mps = kph_to_mps(d.lane_change_cost_kph());
   c.hidden_margin_m = d.hidden_margin_m();
+  c.beside_wait_ahead_m = d.beside_wait_ahead_m();
+  c.beside_approach_s = d.beside_approach_s();
   return c;
 }
 

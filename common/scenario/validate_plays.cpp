@@ -358,6 +358,8 @@ void check_director(const Cursor& top, const Scenario& s) {
   c.range("max_jerk_mps3", d.max_jerk_mps3(), 0.0, 20.0, true);
   c.range("lane_change_cost_kph", d.lane_change_cost_kph(), 0.0, kMaxSpeed_kph, true);
   c.range("hidden_margin_m", d.hidden_margin_m(), 0.0, 10000.0, true);
+  c.range("beside_wait_ahead_m", d.beside_wait_ahead_m(), -1000.0, 1000.0);
+  c.range("beside_approach_s", d.beside_approach_s(), 0.0, 120.0, true);
 }
 
 }  // namespace entourage::scenario::detail

@@ -76,7 +76,7 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
                 const std::vector<bench::EgoVariant>& variants) {
   std::vector<double> pos_t2, speed_t2;  // on passing trigger point 2
   std::vector<double> held_up;  // s, per run
-  std::vector<double> pos, speed, est, a_acc, a_dec, a_jerk, o_acc, o_dec, o_jerk, waits, beyond;
+  std::vector<double> pos, speed, est, a_acc, a_dec, a_jerk, o_acc, o_dec, o_jerk, a_beside, o_beside, waits, beyond;
   int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
   std::map<std::string, int> causes;
   std::map<std::string, int> missing_at_t2;  // runs in which each kind was missing at trigger point 2
@@ -111,6 +111,8 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
     o_acc.push_back(r.autonomous.max_accel_mps2);
     o_dec.push_back(r.autonomous.max_decel_mps2);
     o_jerk.push_back(r.autonomous.max_jerk_mps3);
+    a_beside.push_back(r.actor_beside_ego_s);
+    o_beside.push_back(r.autonomous_beside_ego_s);
     created += r.created;
     in_view += r.created_in_view;
     overlaps_actor += r.overlaps_with_actor;
@@ -150,6 +152,10 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
               percentile(o_acc, 0.5), percentile(o_acc, 0.95), percentile(o_acc, 1.0), percentile(o_dec, 0.5),
               percentile(o_dec, 0.95), percentile(o_dec, 1.0), percentile(o_jerk, 0.5), percentile(o_jerk, 0.95),
               percentile(o_jerk, 1.0));
+  std::printf("longest beside the ego (next lane, within %.0f m) while preparing, per run: median / p95 / max\n"
+              "  actors      %.1f / %.1f / %.1f s\n  autonomous  %.1f / %.1f / %.1f s\n",
+              bench::kBesideEgo_m, percentile(a_beside, 0.5), percentile(a_beside, 0.95), percentile(a_beside, 1.0),
+              percentile(o_beside, 0.5), percentile(o_beside, 0.95), percentile(o_beside, 1.0));
   std::printf("vehicles created               %d   of which inside the view: %d\n", created, in_view);
   std::printf("overlapping pairs              with an actor %d   autonomous only %d   ego touching an actor %d\n",
               overlaps_actor, overlaps_other, ego_contacts);
@@ -158,6 +164,7 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
 int run(int argc, char** argv) {
   std::string scenario_path;
   int runs = 50;
+  int first = 0;
   std::uint64_t seed = 1;
   bool verbose = false;
   bool plain = false;
@@ -170,6 +177,7 @@ int run(int argc, char** argv) {
   args.option("scenario", "FILE", "one scenario with a play (default: the four shipped play scenarios)", &scenario_path);
   args.option("runs", "N", "runs per play (default 50)", &runs);
   args.option("seed", "N", "first traffic seed; run i uses seed + i (default 1)", &seed);
+  args.option("first", "I", "index of the first run (default 0): runs I .. I+N-1, to repeat one run of a longer bench", &first);
   args.flag("verbose", "one line per run as well", &verbose);
   args.flag("trace", "every play report of every run as well (to stderr)", &trace);
   args.flag("trace-traffic", "the vehicles around the ego every 2 s of every play as well (to stderr)", &trace_traffic);
@@ -177,6 +185,10 @@ int run(int argc, char** argv) {
   if (const auto rc = args.parse_or_exit(argc, argv)) return *rc;
   if (runs < 1 || runs > 100000) {
     std::cerr << "entourage-bench-director: --runs wants a number from 1 to 100000\n";
+    return 2;
+  }
+  if (first < 0 || first > 100000) {
+    std::cerr << "entourage-bench-director: --first wants a number from 0 to 100000\n";
     return 2;
   }
   std::vector<std::string> paths;
@@ -199,7 +211,7 @@ int run(int argc, char** argv) {
     }
     std::vector<bench::PlayRunResult> results;
     std::vector<bench::EgoVariant> variants;
-    for (int i = 0; i < runs; ++i) {
+    for (int i = first; i < first + runs; ++i) {
       const std::uint64_t s = seed + static_cast<std::uint64_t>(i);
       bench::EgoVariant v{};
       const ScenarioConfig sc = plain ? loaded.config : bench::vary_ego(loaded.config, i, s, &v);
@@ -213,10 +225,10 @@ int run(int argc, char** argv) {
       if (verbose) {
         const bench::PlayRunResult& r = results.back();
         std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s waited %4.1f s created %d "
-                    "overlaps %d/%d held up %4.1f s  %s\n",
+                    "overlaps %d/%d held up %4.1f s beside %4.1f s  %s\n",
                     i, static_cast<unsigned long long>(s), bench::to_string(v), director::to_string(r.final_phase),
                     r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s, r.handover_wait_s, r.created,
-                    r.overlaps_with_actor, r.overlaps_other, r.held_up_s, r.failure.c_str());
+                    r.overlaps_with_actor, r.overlaps_other, r.held_up_s, r.actor_beside_ego_s, r.failure.c_str());
       }
     }
     print_play(loaded.config.plays.front().name + " (" + loaded.config.name + ")", results, variants);

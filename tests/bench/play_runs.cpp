@@ -19,6 +19,12 @@ bool share_lane(const ObservedVehicle& a, const ObservedVehicle& b) {
   return occupies(b, a.direction, a.lane) || occupies(b, a.direction, a.target_lane);
 }
 
+// In a lane next to the ego's (of its direction, not changing into the ego's), level with it.
+bool beside(const ObservedVehicle& v, const EgoObservation& ego) {
+  return v.direction == ego.direction && std::abs(v.lane - ego.lane) == 1 && v.target_lane == v.lane &&
+         std::abs(v.s_m - ego.s_m) <= kBesideEgo_m;
+}
+
 double bumper_gap_m(const ObservedVehicle& a, const ObservedVehicle& b) {
   return std::abs(a.s_m - b.s_m) - 0.5 * (a.length_m + b.length_m);
 }
@@ -116,6 +122,7 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
   std::map<VehicleId, std::pair<Step, double>> last_accel;  // micro-owned vehicles: (step, accel)
   std::set<std::pair<VehicleId, VehicleId>> overlapping;     // pairs seen overlapping (each counted once)
   std::set<VehicleId> ego_contacts;
+  std::map<VehicleId, double> beside_since_s;  // vehicles beside the ego now: since when
   double first_estimate_s = -1.0;
   bool seen_beyond_trigger2 = false;  // the first report once the ego passed trigger point 2
   const PlayConfig& play = sc.plays.front();
@@ -190,6 +197,18 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
         }
       }
       last_accel[v.id] = {v.step, v.accel_mps2};
+    }
+    for (auto it = beside_since_s.begin(); it != beside_since_s.end();) {
+      const auto v = std::find_if(world.begin(), world.end(), [&](const ObservedVehicle& o) { return o.id == it->first; });
+      it = (v == world.end() || !preparing || !in.ego_prev || !beside(*v, *in.ego_prev)) ? beside_since_s.erase(it) : std::next(it);
+    }
+    if (preparing && in.ego_prev) {
+      for (const ObservedVehicle& v : world) {
+        if (!beside(v, *in.ego_prev)) continue;
+        const double since = beside_since_s.emplace(v.id, in.ego_prev->time_s).first->second;
+        double& longest = v.control == ControlMode::kAutonomous ? r.autonomous_beside_ego_s : r.actor_beside_ego_s;
+        longest = std::max(longest, in.ego_prev->time_s - since);
+      }
     }
     for (std::size_t i = 0; i < world.size(); ++i) {
       const ObservedVehicle& a = world[i];

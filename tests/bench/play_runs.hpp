@@ -66,6 +66,11 @@ struct PlayRunResult {
   double handover_beyond_m = 0.0;    // and the ego this far beyond it
   MotionExtremes actors;             // while transported, in the inner region (micro)
   MotionExtremes autonomous;         // the autonomous vehicles of the inner region, same steps
+  // The longest a vehicle drove beside the ego without a break while the play was prepared (in a
+  // neighbouring lane of its direction, its centre within kBesideEgo_m of the ego's): one under a
+  // director's command, and an autonomous one. A driver notices a car that paces them.
+  double actor_beside_ego_s = 0.0;
+  double autonomous_beside_ego_s = 0.0;
   int created = 0;
   int created_in_view = 0;           // born inside the inner region: must be 0
   int overlaps_with_actor = 0;       // vehicle pairs overlapping where one is an actor
@@ -73,6 +78,8 @@ struct PlayRunResult {
   int ego_contacts_with_actor = 0;   // the ego overlapping an actor (the ego may crash)
   Step steps = 0;
 };
+
+inline constexpr double kBesideEgo_m = 15.0;
 
 // `trace`: if not null, every play report of the run is printed there, one line each.
 // `trace`: every play report; `traffic`: every 2 s from trigger point 1 on, the vehicles around the

@@ -202,6 +202,35 @@ TEST(Casting, AVehicleWhoseIdealPlaceIsBeyondTheWindowIsCreatedOnlyWithRoomLeftI
   EXPECT_NEAR(place->speed_mps, 670.0 / 35.0, 1e-9);
 }
 
+TEST(Staging, ARoleBesideTheEgoWaitsAheadOfItsStartUntilTheApproach) {
+  PlayConfig play = lead_play();
+  play.roles[0].lane_offset = 1;  // a cutter 12 m ahead in the lane left of the ego
+  play.roles[0].ahead_m = 12.0;
+  const DirectorConfig cfg;  // waits 50 m ahead until 20 s before the start
+  const Lanes lanes{2, 0};
+  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), lanes)[0];
+  // 60 s before the start: aimed at where its start is 20 s before it, 50 m further on, by then.
+  const Waypoint early = way_to(slot, 60.0, play.roles[0], Direction::kForward, 0, 60.0, cfg);
+  EXPECT_DOUBLE_EQ(early.time_s, 40.0);
+  EXPECT_DOUBLE_EQ(early.slot.s_m, slot.s_m + 50.0 - 25.0 * 20.0);
+  EXPECT_EQ(early.slot.lane, slot.lane);
+  EXPECT_DOUBLE_EQ(early.slot.speed_mps, slot.speed_mps);
+  // Within the approach: the start itself.
+  const Waypoint late = way_to(slot, 15.0, play.roles[0], Direction::kForward, 0, 15.0, cfg);
+  EXPECT_DOUBLE_EQ(late.time_s, 15.0);
+  EXPECT_DOUBLE_EQ(late.slot.s_m, slot.s_m);
+  // A role in the ego's own lane, one far ahead of it, or no wait configured: the start.
+  PlayConfig lead = lead_play();
+  const Slot own = slots_of(lead, Direction::kForward, 0, at_trigger2(lead, 25.0), lanes)[0];
+  EXPECT_DOUBLE_EQ(way_to(own, 60.0, lead.roles[0], Direction::kForward, 0, 60.0, cfg).slot.s_m, own.s_m);
+  PlayRoleConfig far = play.roles[0];
+  far.ahead_m = kBesideReach_m + 1.0;
+  EXPECT_DOUBLE_EQ(way_to(slot, 60.0, far, Direction::kForward, 0, 60.0, cfg).time_s, 60.0);
+  DirectorConfig off = cfg;
+  off.beside_wait_ahead_m = 0.0;
+  EXPECT_DOUBLE_EQ(way_to(slot, 60.0, play.roles[0], Direction::kForward, 0, 60.0, off).slot.s_m, slot.s_m);
+}
+
 TEST(Staging, APlayThatDoesNotFitBesideTheEgosLaneIsMirrored) {
   PlayConfig play = lead_play();
   play.roles[0].lane_offset = 1;  // a cutter in the lane left of the ego

@@ -99,6 +99,8 @@ director {
   max_jerk_mps3: 3
   lane_change_cost_kph: 10.8
   hidden_margin_m: 80
+  beside_wait_ahead_m: -30
+  beside_approach_s: 15
 }
 )";
 
@@ -193,6 +195,8 @@ TEST(ScenarioPlays, AFullPlayResolvesToSiValues) {
   EXPECT_DOUBLE_EQ(dc.max_jerk_mps3, 3.0);
   EXPECT_NEAR(dc.lane_change_cost_mps, 3.0, 1e-12);
   EXPECT_DOUBLE_EQ(dc.hidden_margin_m, 80.0);
+  EXPECT_DOUBLE_EQ(dc.beside_wait_ahead_m, -30.0);
+  EXPECT_DOUBLE_EQ(dc.beside_approach_s, 15.0);
 }
 
 TEST(ScenarioPlays, DirectorDefaultsAreTheSchemas) {
@@ -206,6 +210,11 @@ TEST(ScenarioPlays, DirectorDefaultsAreTheSchemas) {
   EXPECT_DOUBLE_EQ(dc.max_jerk_mps3, 2.0);
   EXPECT_NEAR(dc.lane_change_cost_mps, 2.0, 1e-12);
   EXPECT_DOUBLE_EQ(dc.hidden_margin_m, 50.0);
+  EXPECT_DOUBLE_EQ(dc.beside_wait_ahead_m, 50.0);
+  EXPECT_DOUBLE_EQ(dc.beside_approach_s, 20.0);
+  const DirectorConfig plain;  // the C++ defaults agree
+  EXPECT_DOUBLE_EQ(plain.beside_wait_ahead_m, dc.beside_wait_ahead_m);
+  EXPECT_DOUBLE_EQ(plain.beside_approach_s, dc.beside_approach_s);
 }
 
 TEST(ScenarioPlays, AProblemNamesTheLineOfTheField) {
@@ -366,6 +375,9 @@ TEST(ScenarioPlays, EachMistakeIsRefusedWithTheFieldNamed) {
       {"harsh jerk", "director { max_jerk_mps3: 25 }\n", "director.max_jerk_mps3", "got 25"},
       {"free lane changes", "director { lane_change_cost_kph: 0 }\n", "director.lane_change_cost_kph", "got 0"},
       {"no hidden margin", "director { hidden_margin_m: 0 }\n", "director.hidden_margin_m", "got 0"},
+      {"no approach", "director { beside_approach_s: 0 }\n", "director.beside_approach_s", "got 0"},
+      {"waiting out of the window", "director { beside_wait_ahead_m: 2000 }\n", "director.beside_wait_ahead_m",
+       "got 2000"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.what);

@@ -301,7 +301,9 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
     if (v == nullptr) continue;  // a created vehicle not seen yet
     const double type_accel = accel_of(setting_.type_accel_mps2, v->type_index);
     const double rate = transport_rate_mps2(setting_.director, type_accel);
-    const TransportCommand t = transport(slots[r], *v, aim_time_s, role.command_mps, in.dt_s, in.world, in.ego,
+    const Waypoint way = way_to(slots[r], aim_time_s, staged_.roles[r], in.ego.direction, in.ego.target_lane,
+                                time_to_start_s, setting_.director);
+    const TransportCommand t = transport(way.slot, *v, way.time_s, role.command_mps, in.dt_s, in.world, in.ego,
                                          setting_.lanes, setting_.director, rate, type_accel);
     role.command_mps = t.speed_mps;
     role.position_error_m = t.position_error_m;

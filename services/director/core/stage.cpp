@@ -65,6 +65,15 @@ std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int 
   return out;
 }
 
+Waypoint way_to(const Slot& slot, double aim_time_s, const PlayRoleConfig& role, Direction ego_direction, int ego_lane,
+                double time_to_start_s, const DirectorConfig& cfg) {
+  const bool beside = slot.direction == ego_direction && slot.lane != ego_lane && std::abs(role.ahead_m) <= kBesideReach_m;
+  if (!beside || cfg.beside_wait_ahead_m == 0.0 || time_to_start_s <= cfg.beside_approach_s) return {slot, aim_time_s};
+  Waypoint w{slot, time_to_start_s - cfg.beside_approach_s};
+  w.slot.s_m += sign(ego_direction) * (cfg.beside_wait_ahead_m - slot.speed_mps * cfg.beside_approach_s);
+  return w;
+}
+
 SpeedBand transport_band(const Slot& slot, const DirectorConfig& cfg) {
   SpeedBand b;
   b.high_mps = slot.speed_mps + cfg.max_speed_offset_mps;

@@ -62,6 +62,22 @@ Aim aim_of(double time_to_start_s, double trigger2_s_m, double speed_at_start_mp
 std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int ego_lane, const Aim& aim,
                            const Lanes& lanes);
 
+// Where an actor is aimed on its way. A role of the ego's direction in another lane and within
+// kBesideReach_m of the ego at the start (a car that cuts in) would otherwise, once cast near the
+// ego, drive beside it for a minute or more: a driver notices a car that paces them, and it keeps
+// them out of that lane. Until `beside_approach_s` before the start it is aimed
+// `beside_wait_ahead_m` ahead of its start (negative: behind): its way leads to where its start is
+// `beside_approach_s` before the start (moving at the start's speed), that much further ahead, by
+// then; in the last seconds the ego comes up to it (or it to the ego) by a few m/s. Other roles,
+// and every role after that: the slot by `aim_time_s`.
+inline constexpr double kBesideReach_m = 30.0;
+struct Waypoint {
+  Slot slot;
+  double time_s = 0.0;  // from now
+};
+Waypoint way_to(const Slot& slot, double aim_time_s, const PlayRoleConfig& role, Direction ego_direction, int ego_lane,
+                double time_to_start_s, const DirectorConfig& cfg);
+
 
 
 // The speeds an actor may drive at on its way to `slot` (never further from the slot's speed

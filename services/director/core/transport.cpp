@@ -201,6 +201,10 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
   // Out early (clearing_time_s). When neither way is within the band, the edge of the band
   // towards the first way that keeps the order: as far out as it gets (it was left with its last
   // command before, which had asked for too little).
+  // (The target is the edge's road position at the start, reached kClearEarly_s early: a vehicle
+  // planned to be behind a zone then drives on past that position before the start, out of a short
+  // zone ahead of it. A plan that really falls back slowed the vehicle's lane behind it down and
+  // made the plays fail more often: services/director/README.md, Pacing.)
   const double t_plan = clearing_time_s(t);
   std::optional<Clearance> best;
   std::optional<Clearance> closest;
