@@ -149,9 +149,8 @@ TEST(Generator, AStandingEgoGetsTheWholeFlowFromBehind) {
   EXPECT_EQ(c.arrivals_at[1], 0U);
 }
 
-// Regulation: arrivals scaled by 1 + gain (expected - present) / expected, within [0, 1 + gain],
-// counted over the whole window for the oncoming direction and over the outer regions for the
-// ego's. A direction's arrivals are counted with the window held at a standing world of that
+// Regulation: the ego's direction's arrivals scaled by 1 + gain (expected - present) / expected,
+// within [0, 1 + gain], counted over the outer regions; the oncoming direction is not regulated. A direction's arrivals are counted with the window held at a standing world of that
 // direction's vehicles: at the stream's density times `density_factor`, and `inner_factor` times
 // that in the inner region. The oncoming entrance (the busiest) over ten minutes, the ego's
 // direction (both its entrances) over an hour.
@@ -195,14 +194,26 @@ std::uint64_t oncoming_arrivals(double gain, double density_factor, double inner
   return arrivals(Direction::kBackward, gain, density_factor, inner_factor);
 }
 
-TEST(Generator, RegulationPullsTheWindowTowardsTheStreamsDensity) {
-  const double plain = static_cast<double>(oncoming_arrivals(0.0, 1.0));
-  EXPECT_NEAR(static_cast<double>(oncoming_arrivals(4.0, 1.0)), plain, 5.0 * std::sqrt(plain));
+TEST(Generator, RegulationPullsTheEgosDirectionTowardsTheStreamsDensity) {
+  const double plain = static_cast<double>(arrivals(Direction::kForward, 0.0, 1.0));
+  EXPECT_NEAR(static_cast<double>(arrivals(Direction::kForward, 4.0, 1.0)), plain, 5.0 * std::sqrt(plain));
   // held empty, only the births of the last steps count as present: close to the full boost of 5
-  const double boosted = static_cast<double>(oncoming_arrivals(4.0, 0.0));
+  const double boosted = static_cast<double>(arrivals(Direction::kForward, 4.0, 0.0));
   EXPECT_GT(boosted, 3.0 * plain);
   EXPECT_LT(boosted, 5.0 * plain + 5.0 * std::sqrt(5.0 * plain));
-  EXPECT_EQ(oncoming_arrivals(4.0, 2.0), 0U);
+  EXPECT_EQ(arrivals(Direction::kForward, 4.0, 2.0), 0U);
+}
+
+// The oncoming vehicles cross the window in well under a minute: regulating their count raised the
+// oncoming flow 4 % above the demand (services/generator/README.md, *Regulation*). They enter at
+// the moving-observer rate whatever the window holds.
+TEST(Generator, TheOncomingDirectionEntersAtThePlainMovingObserverRate) {
+  const double plain = static_cast<double>(oncoming_arrivals(0.0, 1.0));
+  EXPECT_GT(plain, 100.0);
+  for (double density_factor : {0.0, 1.0, 2.0}) {
+    EXPECT_NEAR(static_cast<double>(oncoming_arrivals(4.0, density_factor)), plain, 5.0 * std::sqrt(plain))
+        << "window held at " << density_factor << " times the stream's density";
+  }
 }
 
 // Drivers the ego holds up, or that it follows, gather around it: a whole road of traffic holds

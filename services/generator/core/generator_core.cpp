@@ -198,11 +198,12 @@ std::array<double, 2> GeneratorCore::regulation(const StepInput& in) const {
   // The ego's direction in the outer regions only, by default: the ego gathers vehicles around
   // itself (those it holds up, those it follows), so the inner region holds more than the stream's
   // density, while the outer regions hold what the stream does (whole-road measurement: README,
-  // *Regulation*). The oncoming direction, which the ego does not gather, over the whole window:
-  // fewer vehicles counted fluctuate more, and the factor, clamped at 0, then rises on average
-  // (counting its outer regions, the oncoming flow came out 4 % high).
+  // *Regulation*). The oncoming direction is not regulated: its vehicles cross the window in well
+  // under a minute, so its count does not wander, and counted against the stream's density the
+  // window held fewer of them than the density says, so that the regulation raised the oncoming
+  // flow 4 % above the demand (72 drives: met 1.042 of the prediction, 0.994 without it).
   const WindowBounds w = WindowBounds::around(in.ego.s_m, scenario_.window);
-  const auto whole = [&](Direction d) { return d == Direction::kBackward || scenario_.demand_regulation_whole_window; };
+  const auto whole = [&](Direction) { return scenario_.demand_regulation_whole_window; };
   std::array<std::size_t, 2> present{0, 0};
   const auto count = [&](Direction d, double s_m) {
     const Region r = w.region_of(s_m);
@@ -213,7 +214,7 @@ std::array<double, 2> GeneratorCore::regulation(const StepInput& in) const {
   }
   for (const auto& h : recent_births_) count(h.vehicle.direction, h.vehicle.s_m);
   const double outer_m = (w.front_edge_m - w.inner_front_m) + (w.inner_rear_m - w.rear_edge_m);
-  for (Direction d : {Direction::kForward, Direction::kBackward}) {
+  for (Direction d : {Direction::kForward}) {  // the ego's direction only
     const double counted_m = whole(d) ? w.front_edge_m - w.rear_edge_m : outer_m;
     const double expected = stream(d).density_per_m() * counted_m;
     if (!(expected > 0.0)) continue;
