@@ -6,8 +6,10 @@
 //                    the first two steps with vehicles) and none disappears there (except at the end:
 //                    an owner's last recorded step may be cut short by the recorder stopping)
 //   no_overlap       no two vehicles (ego included) of a direction overlap (length x width boxes)
-//   ego_interacts    the ego is the leader of a micro vehicle in some step, and a micro vehicle
-//                    the ego's leader in some step (the ego is a vehicle like any other to micro)
+//   ego_interacts    the ego is the leader of a micro vehicle in some step (the ego is a vehicle
+//                    like any other to micro). How often a micro vehicle is the ego's leader is
+//                    reported too, but not required: an ego slower than everything on the road
+//                    (rural_ego_slow) may have nobody ahead of it in the inner region for minutes
 
 #include <cstdint>
 #include <string>

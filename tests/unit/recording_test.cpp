@@ -278,10 +278,21 @@ TEST(Checks, AGapInAVehiclesLifeIsCaught) {
   EXPECT_FALSE(find(check_invariants(t, 4.6, 1.8), "continuity").passed);
 }
 
-TEST(Checks, TheEgoMustLeadAndFollowMicroVehicles) {
+TEST(Checks, TheEgoMustLeadMicroVehicles) {
   Tables t = clean_tables();
   for (auto& v : t.vehicles) v.owner = "meso";
   EXPECT_FALSE(find(check_invariants(t, 4.6, 1.8), "ego_interacts").passed);
+}
+
+TEST(Checks, AnEgoWithNobodyAheadOfItStillInteracts) {
+  // Only vehicles behind the ego in its lane: it leads micro vehicles and follows none (an ego
+  // slower than the whole stream, with the road ahead of it empty).
+  Tables t = clean_tables();
+  t.vehicles.erase(std::remove_if(t.vehicles.begin(), t.vehicles.end(), [](const VehicleRow& v) { return v.id == 2; }),
+                   t.vehicles.end());  // the one ahead of the ego
+  const auto c = find(check_invariants(t, 4.6, 1.8), "ego_interacts");
+  EXPECT_TRUE(c.passed) << c.detail;
+  EXPECT_NE(c.detail.find("follows one in 0 steps"), std::string::npos) << c.detail;
 }
 
 }  // namespace
