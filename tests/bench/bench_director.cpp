@@ -24,6 +24,8 @@ constexpr double kAtTrigger_s = 1e-6;
 // A run whose ego the director held up longer than this is counted apart (a steady driver
 // slowed by some 10 % over a preparation of about a minute).
 constexpr double kLongHoldUp_s = 5.0;
+// Traffic around the ego this much slower than without the director counts as slowed down.
+constexpr double kSlowedTraffic = 0.8;
 
 double mean(const std::vector<double>& x) {
   if (x.empty()) return 0.0;
@@ -76,7 +78,7 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
                 const std::vector<bench::EgoVariant>& variants) {
   std::vector<double> pos_t2, speed_t2;  // on passing trigger point 2
   std::vector<double> held_up;  // s, per run
-  std::vector<double> pos, speed, est, a_acc, a_dec, a_jerk, o_acc, o_dec, o_jerk, a_beside, o_beside, waits, beyond;
+  std::vector<double> pos, speed, est, a_acc, a_dec, a_jerk, o_acc, o_dec, o_jerk, a_beside, o_beside, slowed, waits, beyond;
   int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
   std::map<std::string, int> causes;
   std::map<std::string, int> missing_at_t2;  // runs in which each kind was missing at trigger point 2
@@ -112,6 +114,7 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
     o_dec.push_back(r.autonomous.max_decel_mps2);
     o_jerk.push_back(r.autonomous.max_jerk_mps3);
     a_beside.push_back(r.actor_beside_ego_s);
+    if (r.traffic_slowed_to() > 0.0) slowed.push_back(r.traffic_slowed_to());
     o_beside.push_back(r.autonomous_beside_ego_s);
     created += r.created;
     in_view += r.created_in_view;
@@ -152,6 +155,11 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
               percentile(o_acc, 0.5), percentile(o_acc, 0.95), percentile(o_acc, 1.0), percentile(o_dec, 0.5),
               percentile(o_dec, 0.95), percentile(o_dec, 1.0), percentile(o_jerk, 0.5), percentile(o_jerk, 0.95),
               percentile(o_jerk, 1.0));
+  std::printf("traffic of the ego's direction in the inner region, trigger point 1 to 2, mean speed with the director\n"
+              "  of that without, per run: median %.2f  p5 %.2f  min %.2f; below 0.8 in %td runs\n",
+              percentile(slowed, 0.5), percentile(slowed, 0.05),
+              slowed.empty() ? 0.0 : *std::min_element(slowed.begin(), slowed.end()),
+              std::count_if(slowed.begin(), slowed.end(), [](double x) { return x < kSlowedTraffic; }));
   std::printf("longest beside the ego (next lane, within %.0f m) while preparing, per run: median / p95 / max\n"
               "  actors      %.1f / %.1f / %.1f s\n  autonomous  %.1f / %.1f / %.1f s\n",
               bench::kBesideEgo_m, percentile(a_beside, 0.5), percentile(a_beside, 0.95), percentile(a_beside, 1.0),
@@ -221,14 +229,16 @@ int run(int argc, char** argv) {
       if (last.trigger2_time_s >= 0.0 && undirected.trigger2_s >= 0.0) {
         last.held_up_s = (last.trigger2_time_s - last.trigger1_time_s) - (undirected.trigger2_s - undirected.trigger1_s);
       }
+      last.traffic_speed_undirected_mps = undirected.traffic_speed_mps;
       variants.push_back(v);
       if (verbose) {
         const bench::PlayRunResult& r = results.back();
         std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s waited %4.1f s created %d "
-                    "overlaps %d/%d held up %4.1f s beside %4.1f s  %s\n",
+                    "overlaps %d/%d held up %4.1f s beside %4.1f s traffic %4.2f  %s\n",
                     i, static_cast<unsigned long long>(s), bench::to_string(v), director::to_string(r.final_phase),
                     r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s, r.handover_wait_s, r.created,
-                    r.overlaps_with_actor, r.overlaps_other, r.held_up_s, r.actor_beside_ego_s, r.failure.c_str());
+                    r.overlaps_with_actor, r.overlaps_other, r.held_up_s, r.actor_beside_ego_s, r.traffic_slowed_to(),
+                    r.failure.c_str());
       }
     }
     print_play(loaded.config.plays.front().name + " (" + loaded.config.name + ")", results, variants);

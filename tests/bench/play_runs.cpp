@@ -25,6 +25,21 @@ bool beside(const ObservedVehicle& v, const EgoObservation& ego) {
          std::abs(v.s_m - ego.s_m) <= kBesideEgo_m;
 }
 
+// The speeds of the ego's direction's vehicles in the inner region, summed over steps.
+struct SpeedTally {
+  double sum_mps = 0.0;
+  double count = 0.0;
+  void add(const StepInput& in, const ScenarioConfig& sc) {
+    const WindowBounds w = WindowBounds::around(in.ego.s_m, sc.window);
+    for (const ObservedVehicle& v : in.world_prev) {
+      if (v.direction != in.ego.direction || !w.in_inner(v.s_m)) continue;
+      sum_mps += v.speed_mps;
+      count += 1.0;
+    }
+  }
+  double mean_mps() const { return count > 0.0 ? sum_mps / count : -1.0; }
+};
+
 double bumper_gap_m(const ObservedVehicle& a, const ObservedVehicle& b) {
   return std::abs(a.s_m - b.s_m) - 0.5 * (a.length_m + b.length_m);
 }
@@ -104,13 +119,16 @@ TriggerTimes trigger_times_undirected(const ScenarioConfig& sc, std::uint64_t se
   ScenarioConfig undirected = sc;
   undirected.plays.clear();
   WindowCores cores(undirected, seed);
+  SpeedTally traffic;
   for (Step k = 0; k <= undirected.steps() && !cores.at_road_end() && t.trigger2_s < 0.0; ++k) {
     StepInput in = cores.next_input();
     const StepOutputs out = cores.compute(in);
     if (t.trigger1_s < 0.0 && ego_passed(in, play.trigger1_s_m)) t.trigger1_s = in.ego.time_s;
     if (t.trigger2_s < 0.0 && ego_passed(in, play.trigger2_s_m)) t.trigger2_s = in.ego.time_s;
+    if (t.trigger1_s >= 0.0 && t.trigger2_s < 0.0) traffic.add(in, undirected);
     cores.publish(in, out);
   }
+  if (t.trigger2_s >= 0.0) t.traffic_speed_mps = traffic.mean_mps();
   return t;
 }
 
@@ -123,6 +141,7 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
   std::set<std::pair<VehicleId, VehicleId>> overlapping;     // pairs seen overlapping (each counted once)
   std::set<VehicleId> ego_contacts;
   std::map<VehicleId, double> beside_since_s;  // vehicles beside the ego now: since when
+  SpeedTally around_ego;                         // trigger point 1 to 2
   double first_estimate_s = -1.0;
   bool seen_beyond_trigger2 = false;  // the first report once the ego passed trigger point 2
   const PlayConfig& play = sc.plays.front();
@@ -133,6 +152,8 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
     const WindowBounds w = WindowBounds::around(in.ego.s_m, sc.window);
     if (r.trigger1_time_s < 0.0 && ego_passed(in, play.trigger1_s_m)) r.trigger1_time_s = in.ego.time_s;
     if (r.trigger2_time_s < 0.0 && ego_passed(in, play.trigger2_s_m)) r.trigger2_time_s = in.ego.time_s;
+    if (r.trigger1_time_s >= 0.0 && r.trigger2_time_s < 0.0) around_ego.add(in, sc);
+    if (r.trigger2_time_s >= 0.0 && r.traffic_speed_mps < 0.0) r.traffic_speed_mps = around_ego.mean_mps();
     for (const Handoff& h : out.director.births) {
       ++r.created;
       if (w.in_inner(h.vehicle.s_m)) ++r.created_in_view;

@@ -71,6 +71,15 @@ struct PlayRunResult {
   // director's command, and an autonomous one. A driver notices a car that paces them.
   double actor_beside_ego_s = 0.0;
   double autonomous_beside_ego_s = 0.0;
+  // The mean speed of the ego's direction's vehicles in the inner region while the ego drove from
+  // trigger point 1 to 2 (< 0: it did not): against the same run without the director, how much
+  // the director slowed the traffic around the driver.
+  double traffic_speed_mps = -1.0;
+  double traffic_speed_undirected_mps = -1.0;  // filled by the caller (trigger_times_undirected)
+  double traffic_slowed_to() const {           // with / without the director (< 0: unknown)
+    return traffic_speed_mps > 0.0 && traffic_speed_undirected_mps > 0.0 ? traffic_speed_mps / traffic_speed_undirected_mps
+                                                                        : -1.0;
+  }
   int created = 0;
   int created_in_view = 0;           // born inside the inner region: must be 0
   int overlaps_with_actor = 0;       // vehicle pairs overlapping where one is an actor
@@ -93,6 +102,7 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
 struct TriggerTimes {
   double trigger1_s = -1.0;
   double trigger2_s = -1.0;
+  double traffic_speed_mps = -1.0;  // as PlayRunResult's
 };
 TriggerTimes trigger_times_undirected(const ScenarioConfig& sc, std::uint64_t seed);
 
