@@ -98,17 +98,9 @@ double emergency_limit(const Vehicle& v, const CarFollowingParams& cf, double ga
 // An overtaker cutting back in behind a leader at a short gap (and settling behind it afterwards)
 // brakes as the kinematics need, at least comfortably, instead of the car-following model's far
 // harder reaction to a gap below its desired one: the constant-acceleration heuristic of Kesting,
-// Treiber & Helbing (2010) in its simplest form, the leader keeping its deceleration: the gap kept
-// at the leader's speed, and, while the leader brakes, a stop behind the point where it stops.
-// (Judged at the leader's speed alone, a car cutting back in behind one braking for a queue braked
-// at 2 m/s^2 while 3 were needed, and they touched.) Inside the standstill gap there is no floor.
+// Treiber & Helbing (2010) in its simplest form. Inside the standstill gap there is no floor.
 double cut_in_floor_mps2(const Vehicle& v, const CarFollowingParams& cf, const LeaderView& leader) {
-  double needed = keep_gap_decel_mps2(leader.gap_m, cf.idm.min_gap_m, v.speed_mps - leader.speed_mps);
-  if (leader.accel_mps2 < 0.0 && std::isfinite(needed)) {
-    const double leader_stops_in_m = leader.speed_mps * leader.speed_mps / (-2.0 * leader.accel_mps2);
-    const double room_m = leader.gap_m - cf.idm.min_gap_m + leader_stops_in_m;
-    needed = std::max(needed, v.speed_mps * v.speed_mps / (2.0 * room_m));
-  }
+  const double needed = keep_gap_decel_mps2(leader.gap_m, cf.idm.min_gap_m, v.speed_mps - leader.speed_mps);
   return -std::max(cf.idm.comfort_decel_mps2, needed);
 }
 
