@@ -98,9 +98,13 @@ double emergency_limit(const Vehicle& v, const CarFollowingParams& cf, double ga
 // An overtaker cutting back in behind a leader at a short gap (and settling behind it afterwards)
 // brakes as the kinematics need, at least comfortably, instead of the car-following model's far
 // harder reaction to a gap below its desired one: the constant-acceleration heuristic of Kesting,
-// Treiber & Helbing (2010) in its simplest form. Inside the standstill gap there is no floor.
+// Treiber & Helbing (2010) in its simplest form, the leader keeping its deceleration: the gap kept
+// at the leader's speed, and, while the leader brakes, a stop behind the point where it stops.
+// (Judged at the leader's speed alone, a car cutting back in behind one braking for a queue braked
+// at 2 m/s^2 while 3 were needed, and they touched.) Inside the standstill gap there is no floor.
 double cut_in_floor_mps2(const Vehicle& v, const CarFollowingParams& cf, const LeaderView& leader) {
-  const double needed = keep_gap_decel_mps2(leader.gap_m, cf.idm.min_gap_m, v.speed_mps - leader.speed_mps);
+  const double needed = keep_gap_behind_braking_mps2(leader.gap_m, cf.idm.min_gap_m, v.speed_mps, leader.speed_mps,
+                                                     std::max(0.0, -leader.accel_mps2));
   return -std::max(cf.idm.comfort_decel_mps2, needed);
 }
 
@@ -192,6 +196,14 @@ double keep_gap_decel_mps2(double gap_m, double min_gap_m, double closing_mps) {
   if (room_m < 0.0) return kInfinity;
   if (closing_mps <= 0.0) return 0.0;
   return room_m > 0.0 ? closing_mps * closing_mps / (2.0 * room_m) : kInfinity;
+}
+
+double keep_gap_behind_braking_mps2(double gap_m, double min_gap_m, double follower_mps, double leader_mps,
+                                    double leader_brake_mps2) {
+  const double closing = keep_gap_decel_mps2(gap_m, min_gap_m, follower_mps - leader_mps);
+  if (leader_brake_mps2 <= 0.0 || !std::isfinite(closing)) return closing;
+  const double room_m = gap_m - min_gap_m + leader_mps * leader_mps / (2.0 * leader_brake_mps2);
+  return std::max(closing, follower_mps * follower_mps / (2.0 * room_m));
 }
 
 double accel_behind(const Vehicle& v, const CarFollowingParams& cf, const Occupant* leader, bool* emergency) {

@@ -45,6 +45,11 @@ double stopping_decel_mps2(double gap_m, double closing_mps);
 // The deceleration that keeps `min_gap_m` to a leader `gap_m` ahead when closing in on it at
 // `closing_mps`, both at constant speed (0 if not closing); infinite inside the standstill gap.
 double keep_gap_decel_mps2(double gap_m, double min_gap_m, double closing_mps);
+// The same behind a leader braking at `leader_brake_mps2` (0: holding its speed): also a stop behind
+// where the leader stops (Kesting, Treiber & Helbing's heuristic with the leader keeping its
+// deceleration).
+double keep_gap_behind_braking_mps2(double gap_m, double min_gap_m, double follower_mps, double leader_mps,
+                                    double leader_brake_mps2);
 
 // The full decision of one driver for this step.
 Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingEnvironment& env);

@@ -245,14 +245,24 @@ bool can_return(const Vehicle& v, const LaneIndex& index, const DrivingEnvironme
              : env.overtaking().return_decel_mps2;
   const double min_gap_m = v.driver.car_following.idm.min_gap_m;
   const LaneIndex::Neighbours n = index.neighbours(v.direction, own_lane(v, env), v.progress_m(), v.id);
+  // Back in the lane it brakes for its new leader as the leader does (driving.cpp, the cut-in
+  // floor): the follower there is judged against that braking, not against a car holding its speed
+  // (a car that cut back in behind one braking for a queue was otherwise run into by its follower).
+  double own_brake_mps2 = std::max(0.0, -v.accel_mps2);
   if (n.leader != nullptr) {
     const double gap_m = gap_between(*n.leader, v.progress_m(), v.length_m);
-    if (keep_gap_decel_mps2(gap_m, min_gap_m, v.speed_mps - n.leader->speed_mps) > leader_limit_mps2) return false;
+    const double needed = keep_gap_behind_braking_mps2(gap_m, min_gap_m, v.speed_mps, n.leader->speed_mps,
+                                                       std::max(0.0, -n.leader->accel_mps2));
+    if (needed > leader_limit_mps2) return false;
+    own_brake_mps2 = std::max(own_brake_mps2, needed);
   }
   if (n.follower != nullptr) {
     const Occupant self{v.id, v.progress_m(), v.speed_mps, 0.0, v.length_m};
     const double gap_m = gap_between(self, n.follower->progress_m, n.follower->length_m);
-    if (keep_gap_decel_mps2(gap_m, min_gap_m, n.follower->speed_mps - v.speed_mps) > follower_limit_mps2) return false;
+    if (keep_gap_behind_braking_mps2(gap_m, min_gap_m, n.follower->speed_mps, v.speed_mps, own_brake_mps2) >
+        follower_limit_mps2) {
+      return false;
+    }
   }
   return true;
 }

@@ -271,6 +271,32 @@ TEST(Overtaking, CutsBackIntoAGapOfAPlatoonAtAComfortableDeceleration) {
   EXPECT_GT(w.min_clearance_m, 1.5);
 }
 
+TEST(Overtaking, ACarCuttingBackInBrakesForWhatItsLeaderIsDoingNotOnlyForItsSpeed) {
+  // The director bench's rural play (run 44, seed 45): a car returning from the oncoming lane behind
+  // a car that braked for a queue ahead braked only as hard as keeping its gap to a leader holding
+  // its speed asks (some 2 m/s^2) while that leader braked harder and harder; they touched at 15
+  // and 13 m/s. Here, 1.4 s before: 24.8 m/s, 10.8 m behind a leader at 18.4 m/s braking at 1.86
+  // m/s^2. Holding its speed the leader would ask 2.3 m/s^2; braking on, stopping behind where it
+  // stops asks 3.1.
+  ScenarioConfig sc = rural();
+  Vehicle me = car(1, Direction::kForward, 0, 1000.0, 24.8, 25.0, LaneChangeModel::kOvertaking);
+  me.lane = 1;
+  me.lane_change.from_lane = 1;
+  me.lane_change.to_lane = 0;
+  me.lane_change.phase = LaneChangePhase::kMoving;
+  me.lane_change.phase_elapsed_s = 1.0;
+  me.overtaking.phase = OvertakingPhase::kReturning;
+  me.overtaking.started = 1;
+  const double leader_s = 1000.0 + 4.5 + 10.8;
+  LaneIndex index(1, 1);
+  add_to_index(index, Direction::kForward, 1, 0, 1, 1000.0, 24.8, 0.0, 4.5);
+  add_to_index(index, Direction::kForward, 0, 0, 2, leader_s, 18.4, -1.86, 4.5);
+  index.sort();
+  const Decision d = decide(me, index, DrivingEnvironment(sc));
+  const double room_m = 10.8 - me.driver.car_following.idm.min_gap_m + 18.4 * 18.4 / (2.0 * 1.86);
+  EXPECT_LE(d.accel_mps2, -24.8 * 24.8 / (2.0 * room_m) + 1e-9);
+}
+
 TEST(Overtaking, AbortsAlongAPlatoonWhenTheNextPassCannotBeFinished) {
   // Past the first car of a tight platoon (no gap it can cut into at its speed) when an oncoming
   // car comes into view: it must not take in the next car; it brakes and drops back into a gap.
