@@ -199,6 +199,32 @@ TEST(Overtaking, AnAbortingOvertakerFacingAnOncomingCarAsksNoMoreOfATruckBehindT
   EXPECT_TRUE(can_return(me, index, DrivingEnvironment(sc)));
 }
 
+TEST(Overtaking, AReturnIsJudgedOnTheBrakingItWillNeedNotOnlyOnTheSpeeds) {
+  // An aborting car (24 m/s, an oncoming car 40 m ahead) beside a gap: its leader there, 15 m
+  // ahead, at 18 m/s, brakes at 6 m/s^2 for a queue; back in the lane it must brake at about 7.2 to
+  // stop behind it. Its follower there, 12 m behind at 27 m/s, could keep its distance to a car
+  // holding its speed (0.5 m/s^2) but not to one braking at 7.2 (7.3 > the 6 a truck has).
+  ScenarioConfig sc = rural();
+  sc.overtaking.follower_max_decel_mps2 = 6.0;
+  Vehicle me = car(1, Direction::kForward, 1, 1000.0, 24.0, 25.0, LaneChangeModel::kOvertaking);
+  me.driver.max_decel_mps2 = 9.0;
+  LaneIndex index(1, 1);
+  add_to_index(index, Direction::kForward, 1, 1, 1, 1000.0, 24.0, 0.0, 4.5);
+  add_to_index(index, Direction::kForward, 0, 0, 2, 1000.0 + 4.5 + 15.0, 18.0, -6.0, 4.5);  // the leader
+  add_to_index(index, Direction::kForward, 0, 0, 3, 1000.0 - 4.5 - 12.0, 27.0, 0.0, 4.5);   // the follower
+  add_to_index(index, Direction::kBackward, 0, 0, 4, -1040.0, 20.0, 0.0, 4.5);              // oncoming
+  index.sort();
+  EXPECT_FALSE(can_return(me, index, DrivingEnvironment(sc)));
+  // The leader holding its speed: the gap would do for both.
+  LaneIndex steady(1, 1);
+  add_to_index(steady, Direction::kForward, 1, 1, 1, 1000.0, 24.0, 0.0, 4.5);
+  add_to_index(steady, Direction::kForward, 0, 0, 2, 1000.0 + 4.5 + 15.0, 18.0, 0.0, 4.5);
+  add_to_index(steady, Direction::kForward, 0, 0, 3, 1000.0 - 4.5 - 12.0, 27.0, 0.0, 4.5);
+  add_to_index(steady, Direction::kBackward, 0, 0, 4, -1040.0, 20.0, 0.0, 4.5);
+  steady.sort();
+  EXPECT_TRUE(can_return(me, steady, DrivingEnvironment(sc)));
+}
+
 TEST(Overtaking, NoOvertakingInARestrictedZoneOrOnAFreeway) {
   ScenarioConfig sc = rural();
   sc.road.no_overtaking.push_back({900.0, 1800.0, true, true});
