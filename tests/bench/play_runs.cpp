@@ -219,18 +219,20 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
       }
       last_accel[v.id] = {v.step, v.accel_mps2};
     }
-    for (auto it = beside_since_s.begin(); it != beside_since_s.end();) {
-      const auto v = std::find_if(world.begin(), world.end(), [&](const ObservedVehicle& o) { return o.id == it->first; });
-      it = (v == world.end() || !preparing || !in.ego_prev || !beside(*v, *in.ego_prev)) ? beside_since_s.erase(it) : std::next(it);
-    }
+    // Those beside the ego now keep the time they came beside it; the others drop out.
+    std::map<VehicleId, double> beside_now;
     if (preparing && in.ego_prev) {
+      const double now_s = in.ego_prev->time_s;
       for (const ObservedVehicle& v : world) {
         if (!beside(v, *in.ego_prev)) continue;
-        const double since = beside_since_s.emplace(v.id, in.ego_prev->time_s).first->second;
+        const auto before = beside_since_s.find(v.id);
+        const double since = before != beside_since_s.end() ? before->second : now_s;
+        beside_now.emplace(v.id, since);
         double& longest = v.control == ControlMode::kAutonomous ? r.autonomous_beside_ego_s : r.actor_beside_ego_s;
-        longest = std::max(longest, in.ego_prev->time_s - since);
+        longest = std::max(longest, now_s - since);
       }
     }
+    beside_since_s = std::move(beside_now);
     for (std::size_t i = 0; i < world.size(); ++i) {
       const ObservedVehicle& a = world[i];
       if (!w.in_inner(a.s_m)) continue;
