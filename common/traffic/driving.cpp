@@ -59,7 +59,30 @@ struct Obstacle {
   double closing_mps = 0.0;  // how fast the driver approaches it (its own speed: it stands)
 };
 
-Obstacle obstacle_in(const Vehicle& v, const LaneIndex& index, int lane, const DrivingEnvironment& env) {
+// Does an overtaker in the oncoming lane leave the oncoming vehicle there to its pass review
+// (overtaking_manoeuvre.hpp, OvertakingStep::clear_of_oncoming)? Passing, while the review finds
+// the rest of the pass can be finished in time; moving back in, while it is out of the lane before
+// they would meet. Braking for it all the same undid passes the review had found safe: the
+// overtaker slowed beside the vehicle it passed until the pass failed, the oncoming driver braking
+// as well, and then cut back in at a crawl in front of its former follower, which ran into it.
+bool leaves_oncoming_to_pass_review(const Vehicle& v, int lane, const DrivingEnvironment& env, bool clear_of_oncoming,
+                                    double gap_m, double closing_mps) {
+  if (lane < env.lanes(v.direction)) return false;
+  switch (v.overtaking.phase) {
+    case OvertakingPhase::kPassing:
+      return clear_of_oncoming;
+    case OvertakingPhase::kReturning: {
+      const LaneChangeState& lc = v.lane_change;
+      const double left_s = lc.moving() ? std::max(0.0, lc.duration_s - lc.phase_elapsed_s) : 0.0;
+      return gap_m > closing_mps * left_s;
+    }
+    default:
+      return false;
+  }
+}
+
+Obstacle obstacle_in(const Vehicle& v, const LaneIndex& index, int lane, const DrivingEnvironment& env,
+                     bool clear_of_oncoming) {
   Obstacle ob;
   const DrivingRules& rules = env.rules();
   if (lane < env.lanes(v.direction)) {
@@ -70,6 +93,10 @@ Obstacle obstacle_in(const Vehicle& v, const LaneIndex& index, int lane, const D
     if (const Occupant* o = index.oncoming(v.direction, lane, v.progress_m())) {
       const double gap = std::max(0.0, oncoming_gap(*o, v.progress_m(), v.length_m));
       const double closing = v.speed_mps + o->speed_mps;
+      if (leaves_oncoming_to_pass_review(v, lane, env, clear_of_oncoming, gap, closing)) {
+        ob.closing_mps = v.speed_mps;
+        return ob;
+      }
       // Both drivers stop short of the meeting point: each has half the gap.
       // Also when both stand: one that stopped facing the other must not creep towards it.
       if (rules.oncoming_too_close(gap, closing)) ob.gap_m = std::min(ob.gap_m, 0.5 * gap);
@@ -108,8 +135,21 @@ double cut_in_floor_mps2(const Vehicle& v, const CarFollowingParams& cf, const L
   return -std::max(cf.idm.comfort_decel_mps2, needed);
 }
 
+// Moving out to pass, the overtaker is clear of the vehicle ahead in its own lane once it is in the
+// other lane: it does not follow it meanwhile (the car-following model would hold it at its desired
+// gap, and a pass planned to gain from its start lost the whole lateral move), unless at its free
+// acceleration it would come within its standstill gap before the move is over.
+bool clears_moving_out(const Vehicle& v, const CarFollowingParams& cf, int lane, const LeaderView& leader) {
+  const LaneChangeState& lc = v.lane_change;
+  if (v.overtaking.phase != OvertakingPhase::kPassing || !lc.moving() || lane != lc.from_lane) return false;
+  const double left_s = std::max(0.0, lc.duration_s - lc.phase_elapsed_s);
+  const double rel_accel = std::max(0.0, car_following_accel_mps2(cf, v.speed_mps, nullptr) - leader.accel_mps2);
+  const double gain_m = (v.speed_mps - leader.speed_mps) * left_s + 0.5 * rel_accel * left_s * left_s;
+  return gain_m < leader.gap_m - cf.idm.min_gap_m;
+}
+
 Longitudinal longitudinal(const Vehicle& v, const CarFollowingParams& cf, const LaneIndex& index,
-                          const DrivingEnvironment& env) {
+                          const DrivingEnvironment& env, bool clear_of_oncoming) {
   const bool hdm = cf.human_driver;
   const std::size_t anticipate =
       hdm ? std::min<std::size_t>(kMaxAnticipated, static_cast<std::size_t>(std::max(1, cf.hdm.anticipated_leaders))) : 1;
@@ -122,14 +162,15 @@ Longitudinal longitudinal(const Vehicle& v, const CarFollowingParams& cf, const 
   double decided = kInfinity;
   for (int i = 0; i < occ.count; ++i) {
     const int lane = occ.lanes[static_cast<std::size_t>(i)];
-    const std::size_t n = leaders_in(v, index, lane, views.data(), anticipate);
+    std::size_t n = leaders_in(v, index, lane, views.data(), anticipate);
+    if (n > 0 && clears_moving_out(v, cf, lane, views[0])) n = 0;
     counts[static_cast<std::size_t>(i)] = n;
     if (n > 0) nearest[static_cast<std::size_t>(i)] = views[0];
     double a = hdm ? hdm_instant_accel_mps2(cf, cf.hdm, v.hdm_errors, v.speed_mps, views.data(), n)
                          : car_following_accel_mps2(cf, v.speed_mps, n > 0 ? views.data() : nullptr);
     if (n > 0 && lane == returning_to) a = std::max(a, cut_in_floor_mps2(v, cf, views[0]));
     decided = std::min(decided, a);
-    const Obstacle ob = obstacle_in(v, index, lane, env);
+    const Obstacle ob = obstacle_in(v, index, lane, env, clear_of_oncoming);
     obstacles[static_cast<std::size_t>(i)] = ob;
     if (std::isfinite(ob.gap_m)) {
       const LeaderView standing{ob.gap_m, 0.0, 0.0};
@@ -230,6 +271,7 @@ Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingEnvironme
   if (scripted) cf.idm.desired_speed_mps = kScriptedCarFollowingSpeed_mps;  // the script sets the speed
 
   double accel_cap = kInfinity;
+  bool clear_of_oncoming = false;
   bool lateral_decided = false;
   if ((overtakes(v, env) && chooses_lanes_freely(v)) || v.overtaking.active()) {
     const OvertakingStep ot = overtaking_step(v, index, env, cf.idm.desired_speed_mps);
@@ -237,6 +279,7 @@ Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingEnvironme
     d.rng_state = ot.rng_state;
     cf.idm.desired_speed_mps = ot.desired_speed_mps;
     accel_cap = ot.accel_cap_mps2;
+    clear_of_oncoming = ot.clear_of_oncoming;
     if (ot.lateral_start) {
       d.lane_change = ot.lane_change;
       lateral_decided = true;
@@ -257,7 +300,7 @@ Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingEnvironme
     d.mandatory_change = plan.mandatory;
   }
 
-  const Longitudinal lon = longitudinal(v, cf, index, env);
+  const Longitudinal lon = longitudinal(v, cf, index, env, clear_of_oncoming);
   d.hdm_decided_mps2 = lon.decided_mps2;
   double a = std::min({lon.applied_mps2, accel_cap, gap_seeking_cap_mps2(v, cf, index, d.lane_change)});
   if (scripted) a = scripted_accel_mps2(v, a, cf.idm.max_accel_mps2, env.dt_s());

@@ -137,6 +137,7 @@ OvertakingStep past_without_room(OvertakingStep out, const Vehicle& v, const Occ
   const PassReview next_review = review_pass(env.overtaking(), pass_situation(v, *next, index, env, desired_speed_mps));
   if (!next_review.safe_to_finish) return start_abort(out);
   out.state.overtaken = next->id;
+  out.clear_of_oncoming = true;
   return out;
 }
 
@@ -148,13 +149,16 @@ OvertakingStep continue_pass(const Vehicle& v, const LaneIndex& index, const Dri
   out.state.elapsed_s += env.dt_s();
   out.rng_state = v.driver.rng_state;
   out.desired_speed_mps = passing_speed_mps(p, desired_speed_mps);
-  if (v.lane_change.active()) return out;  // still moving out
   const Occupant* overtaken = find(index, v.direction, own_lane(v, env), v.overtaking.overtaken);
   if (overtaken == nullptr) {  // gone (left the region, or changed lane): return when there is room
+    if (v.lane_change.active()) return out;
     return can_return(v, index, env) ? start_return(out, v, env) : out;
   }
   const OvertakingSituation s = pass_situation(v, *overtaken, index, env, desired_speed_mps);
-  switch (review_pass(p, s).action) {
+  const PassReview review = review_pass(p, s);
+  out.clear_of_oncoming = review.safe_to_finish;
+  if (v.lane_change.active()) return out;  // still moving out
+  switch (review.action) {
     case PassAction::kReturn:  // far enough ahead, and room in front of the overtaken vehicle
       if (can_return(v, index, env)) return start_return(out, v, env);
       return past_without_room(out, v, *overtaken, index, env, desired_speed_mps);

@@ -43,6 +43,10 @@ struct OvertakingStep {
   LaneChangeState lane_change;
   double desired_speed_mps = 0.0; // the desired speed for this step (the passing speed in a pass)
   double accel_cap_mps2 = std::numeric_limits<double>::infinity();  // braking of an abort
+  // The rest of the pass can be finished before the oncoming vehicle (the pass review's verdict,
+  // with abort_margin_s): the overtaker does not brake for that vehicle, as the oncoming driver
+  // does for it (the pass review, not the car-following model, decides whether to go on).
+  bool clear_of_oncoming = false;
   std::uint64_t rng_state = 0;
   bool started = false;
   bool aborted = false;

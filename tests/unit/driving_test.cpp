@@ -323,6 +323,55 @@ TEST(Overtaking, ACarCuttingBackInBrakesForWhatItsLeaderIsDoingNotOnlyForItsSpee
   EXPECT_LE(d.accel_mps2, -24.8 * 24.8 / (2.0 * room_m) + 1e-9);
 }
 
+TEST(Overtaking, AnOvertakerGainsOnTheVehicleItPassesWhileStillMovingOut) {
+  // The pass is planned to gain on the truck from its start (behaviour/overtaking.hpp); following
+  // the truck at its desired gap while moving out, the car lost the whole lateral move, and on a
+  // whole rural road 39 % of the passes were aborted (the review found them late).
+  MiniWorld w(rural());
+  Vehicle me = car(1, Direction::kForward, 0, 1000.0, 16.0, 25.0, LaneChangeModel::kOvertaking);
+  me.lane_change.from_lane = 0;
+  me.lane_change.to_lane = 1;
+  me.lane_change.phase = LaneChangePhase::kMoving;
+  me.lane_change.duration_s = w.env.overtaking().lateral_s;
+  me.overtaking.phase = OvertakingPhase::kPassing;
+  me.overtaking.overtaken = 2;
+  me.overtaking.started = 1;
+  w.vehicles.push_back(me);
+  w.vehicles.push_back(truck(2, Direction::kForward, 1000.0 + 2.25 + 8.25 + 26.0, 16.0));  // 26 m ahead
+  while (w.get(1).lane_change.active()) {
+    w.step();
+    ASSERT_LT(w.t(), 10.0);
+  }
+  EXPECT_EQ(w.get(1).lane, 1);
+  EXPECT_GT(w.get(1).speed_mps, 16.0 + 2.0);  // at some 1 m/s^2 over the 2.5 s of the move
+  EXPECT_GT(w.min_clearance_m, 5.0);
+}
+
+TEST(Overtaking, APassTheReviewFindsSafeIsNotUndoneByBrakingForTheOncomingCar) {
+  // Nearly past a car at 18 m/s, an oncoming car 200 m ahead: within the distance at which the
+  // drivers brake for each other (4 s at their closing speed plus 30 m), but the rest of the pass
+  // (some 3 s) is over with more than abort_margin_s to spare. On a whole rural road the overtaker
+  // braked for it all the same, fell back beside the car it passed until the pass failed, and cut
+  // back in at a crawl in front of a truck, which ran into it.
+  MiniWorld w(rural());
+  w.vehicles.push_back(car(2, Direction::kForward, 0, 1000.0, 18.0, 18.0, LaneChangeModel::kNone));
+  w.vehicles.push_back(overtaker_in_pass(1, 1000.0 + 4.5 + 12.0, 27.0, 2));  // its front 14.25 m past the car's rear
+  const double oncoming_s = w.get(1).s_m + 2.25 + 200.0 + 2.25;
+  w.vehicles.push_back(car(3, Direction::kBackward, 0, oncoming_s, 25.0, 25.0, LaneChangeModel::kNone));
+  ASSERT_TRUE(w.env.rules().oncoming_too_close(200.0, 27.0 + 25.0));
+  double hardest_brake = 0.0;
+  while (w.get(1).overtaking.active()) {
+    w.step();
+    hardest_brake = std::min(hardest_brake, w.get(1).accel_mps2);
+    ASSERT_LT(w.t(), 30.0) << "never back in its own lane";
+  }
+  EXPECT_EQ(w.get(1).overtaking.aborted, 0U);
+  EXPECT_EQ(w.get(1).lane, 0);
+  EXPECT_GT(w.get(1).s_m, w.get(2).s_m);
+  EXPECT_GT(hardest_brake, -1.0);
+  EXPECT_GT(w.min_clearance_m, 0.0);
+}
+
 TEST(Overtaking, AbortsAlongAPlatoonWhenTheNextPassCannotBeFinished) {
   // Past the first car of a tight platoon (no gap it can cut into at its speed) when an oncoming
   // car comes into view: it must not take in the next car; it brakes and drops back into a gap.
