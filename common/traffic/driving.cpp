@@ -71,11 +71,8 @@ bool leaves_oncoming_to_pass_review(const Vehicle& v, int lane, const DrivingEnv
   switch (v.overtaking.phase) {
     case OvertakingPhase::kPassing:
       return clear_of_oncoming;
-    case OvertakingPhase::kReturning: {
-      const LaneChangeState& lc = v.lane_change;
-      const double left_s = lc.moving() ? std::max(0.0, lc.duration_s - lc.phase_elapsed_s) : 0.0;
-      return gap_m > closing_mps * left_s;
-    }
+    case OvertakingPhase::kReturning:
+      return gap_m > closing_mps * v.lane_change.moving_left_s();
     default:
       return false;
   }
@@ -93,13 +90,12 @@ Obstacle obstacle_in(const Vehicle& v, const LaneIndex& index, int lane, const D
     if (const Occupant* o = index.oncoming(v.direction, lane, v.progress_m())) {
       const double gap = std::max(0.0, oncoming_gap(*o, v.progress_m(), v.length_m));
       const double closing = v.speed_mps + o->speed_mps;
-      if (leaves_oncoming_to_pass_review(v, lane, env, clear_of_oncoming, gap, closing)) {
-        ob.closing_mps = v.speed_mps;
-        return ob;
-      }
       // Both drivers stop short of the meeting point: each has half the gap.
       // Also when both stand: one that stopped facing the other must not creep towards it.
-      if (rules.oncoming_too_close(gap, closing)) ob.gap_m = std::min(ob.gap_m, 0.5 * gap);
+      if (rules.oncoming_too_close(gap, closing) &&
+          !leaves_oncoming_to_pass_review(v, lane, env, clear_of_oncoming, gap, closing)) {
+        ob.gap_m = std::min(ob.gap_m, 0.5 * gap);
+      }
     }
   }
   ob.closing_mps = v.speed_mps;
@@ -142,7 +138,7 @@ double cut_in_floor_mps2(const Vehicle& v, const CarFollowingParams& cf, const L
 bool clears_moving_out(const Vehicle& v, const CarFollowingParams& cf, int lane, const LeaderView& leader) {
   const LaneChangeState& lc = v.lane_change;
   if (v.overtaking.phase != OvertakingPhase::kPassing || !lc.moving() || lane != lc.from_lane) return false;
-  const double left_s = std::max(0.0, lc.duration_s - lc.phase_elapsed_s);
+  const double left_s = lc.moving_left_s();
   const double rel_accel = std::max(0.0, car_following_accel_mps2(cf, v.speed_mps, nullptr) - leader.accel_mps2);
   const double gain_m = (v.speed_mps - leader.speed_mps) * left_s + 0.5 * rel_accel * left_s * left_s;
   return gain_m < leader.gap_m - cf.idm.min_gap_m;

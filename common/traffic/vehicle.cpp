@@ -10,6 +10,10 @@ double LaneChangeState::lateral_fraction() const {
   return x * x * x * (10.0 + x * (-15.0 + 6.0 * x));
 }
 
+double LaneChangeState::moving_left_s() const {
+  return phase == LaneChangePhase::kMoving ? std::max(0.0, duration_s - phase_elapsed_s) : 0.0;
+}
+
 Indicator Vehicle::indicator() const {
   if (!lane_change.active() || lane_change.to_lane == lane_change.from_lane) {
     // A controlled actor shows what its script asks (e.g. before a cut-in).

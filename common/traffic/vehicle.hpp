@@ -50,6 +50,8 @@ struct LaneChangeState {
   bool moving() const { return phase == LaneChangePhase::kMoving; }
   // Lateral progress 0..1 along a quintic profile (zero lateral speed and acceleration at both ends).
   double lateral_fraction() const;
+  // Time until the lateral movement ends (0 when not moving sideways).
+  double moving_left_s() const;
 };
 
 enum class Indicator : std::uint8_t { kOff = 0, kLeft = 1, kRight = 2 };

@@ -15,6 +15,9 @@ constexpr ServiceId kSelf{Role::kGenerator, 0};
 constexpr std::uint64_t kDriverStreamLabel = 0x6472697665720000ULL;
 // How long the generator remembers a birth the world does not show yet.
 constexpr Step kBirthMemorySteps = 20;
+// The direction whose arrivals the regulation scales: the ego's (services/generator/README.md,
+// *Regulation*).
+constexpr Direction kRegulatedDirection = Direction::kForward;
 
 double edge_position(Edge e, const WindowBounds& w) { return e == Edge::kRear ? w.rear_edge_m : w.front_edge_m; }
 
@@ -191,10 +194,9 @@ double GeneratorCore::rate(const EdgeStream& s, double u) const {
   return s.edge == Edge::kRear ? stream.rate_rear_per_s(u) : stream.rate_front_per_s(u);
 }
 
-std::array<double, 2> GeneratorCore::regulation(const StepInput& in) const {
-  std::array<double, 2> factor{1.0, 1.0};  // by direction index
+double GeneratorCore::regulation(const StepInput& in) const {
   const double gain = scenario_.demand_regulation_gain;
-  if (gain <= 0.0) return factor;
+  if (gain <= 0.0) return 1.0;
   // The ego's direction in the outer regions only, by default: the ego gathers vehicles around
   // itself (those it holds up, those it follows), so the inner region holds more than the stream's
   // density, while the outer regions hold what the stream does (whole-road measurement: README,
@@ -202,7 +204,7 @@ std::array<double, 2> GeneratorCore::regulation(const StepInput& in) const {
   // under a minute, so its count does not wander, and counted against the stream's density the
   // window held fewer of them than the density says, so that the regulation raised the oncoming
   // flow 4 % above the demand (72 drives: met 1.042 of the prediction, 0.994 without it).
-  const Direction d = Direction::kForward;  // the ego's direction only
+  const Direction d = kRegulatedDirection;
   const WindowBounds w = WindowBounds::around(in.ego.s_m, scenario_.window);
   const bool whole = scenario_.demand_regulation_whole_window;
   std::size_t present = 0;
@@ -218,20 +220,19 @@ std::array<double, 2> GeneratorCore::regulation(const StepInput& in) const {
   const double outer_m = (w.front_edge_m - w.inner_front_m) + (w.inner_rear_m - w.rear_edge_m);
   const double counted_m = whole ? w.front_edge_m - w.rear_edge_m : outer_m;
   const double expected = stream(d).density_per_m() * counted_m;
-  if (!(expected > 0.0)) return factor;
+  if (!(expected > 0.0)) return 1.0;
   const double deficit = (expected - static_cast<double>(present)) / expected;
-  factor[dir_index(d)] = std::clamp(1.0 + gain * deficit, 0.0, 1.0 + gain);
-  return factor;
+  return std::clamp(1.0 + gain * deficit, 0.0, 1.0 + gain);
 }
 
 void GeneratorCore::arrive(const StepInput& in) {
   const double u = std::max(0.0, in.ego.speed_mps);
-  const std::array<double, 2> regulated = regulation(in);
+  const double regulated = regulation(in);
   for (EdgeStream& s : edges_) {
     const ObservedStream& stream = this->stream(s.dir);
     if (stream.empty()) continue;
     const double plain = rate(s, u) * scenario_.step_s;
-    const double hazard = plain * regulated[dir_index(s.dir)];
+    const double hazard = s.dir == kRegulatedDirection ? plain * regulated : plain;
     counters_.expected_plain_at[static_cast<std::size_t>(s.entrance)] += plain;
     counters_.expected_regulated_at[static_cast<std::size_t>(s.entrance)] += hazard;
     s.accumulated += hazard;

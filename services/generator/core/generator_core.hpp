@@ -126,11 +126,11 @@ class GeneratorCore {
   Handoff birth(const Vehicle& model, Direction dir, int lane, double progress_m, double speed_mps,
                 const WindowBounds& w, Step step, HandoffReason reason);
   double rate(const EdgeStream& s, double u) const;
-  // Per direction (dir_index), the factor on its arrivals: how far its vehicles counted (the ego's
-  // direction in the outer regions, the oncoming one in the whole window; scenario
+  // The factor on the arrivals of the ego's direction (the oncoming direction is not regulated):
+  // how far its vehicles counted (in the outer regions, or the whole window; scenario
   // demand.regulation_counts) are from the stream's density times the length counted (scenario
   // demand.regulation_gain).
-  std::array<double, 2> regulation(const StepInput& in) const;
+  double regulation(const StepInput& in) const;
 
   ScenarioConfig scenario_;
   GeneratorConfig config_;
