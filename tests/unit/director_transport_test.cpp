@@ -84,9 +84,11 @@ TEST(Transport, AVehicleThatWouldStandInAClearZoneIsSentToTheNextLaneOrOutOfTheZ
   ASSERT_TRUE(out.has_value());
   EXPECT_EQ(out->lane, 0);
   EXPECT_NEAR(v.s_m + out->speed_mps * 35.0, 3005.0 - 2.25 - 5.0, 1e-9);  // out 5 s early
-  // With the ego behind it in its lane it cannot fall behind the ego: ahead of the zone.
+  // With the ego behind it in its lane it cannot fall behind the ego: ahead of the zone, and in
+  // the next lane, where the ego does not close up behind it.
   const auto ahead = clear(v, both, Lanes{2, 0}, testing::ego_at(0, 2000.0, 25.0, 0));
   ASSERT_TRUE(ahead.has_value());
+  EXPECT_EQ(ahead->lane, 1);
   EXPECT_NEAR(v.s_m + ahead->speed_mps * 35.0, 3040.0 + 2.25 + 5.0, 1e-9);
   // On one lane it would have to overtake or be overtaken: left to its own driving.
   EXPECT_FALSE(clear(v, play, Lanes{1, 1}, ego).has_value());
@@ -139,6 +141,37 @@ TEST(Transport, AClearedVehicleAheadOfTheEgoThatCannotMakeItInTimeDrivesAtTheTop
   ASSERT_TRUE(top.has_value());
   EXPECT_DOUBLE_EQ(top->speed_mps, v.speed_mps + cfg.max_speed_offset_mps);
   EXPECT_EQ(top->lane, 0);
+}
+
+TEST(Transport, TheEgosLeaderInAZoneMovesAheadInTheActorsLaneOnlyOutOfTheActorsWay) {
+  const Lanes lanes{2, 0};
+  DirectorConfig cfg;
+  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0, 0);
+  // A cut-in 40 s from now (ego then at 3000 m): the ego's lane a zone from 3 to 60 m ahead, the
+  // cutter's room in the left lane from 3008 to 3046 m. The ego's leader, 45 m ahead of it at its
+  // speed, would stand in the zone: by its speed alone it stays in the queue the ego follows.
+  const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 3003.0, 3060.0},
+                                       {Direction::kForward, 1, 3008.0, 3046.0}};
+  const std::vector<int> role_lanes{1};
+  const ObservedVehicle leader = vehicle(1, 2045.0, 25.0, 0);
+  auto clear = [&](std::vector<ActorPlace> actors) {
+    return clear_out(leader, ClearingSituation{zones, 40.0, ego, 3000.0, role_lanes, lanes, cfg, std::move(actors)});
+  };
+  // No actor in the left lane yet: it changes there and is ahead of the cutter's room 5 s early.
+  const auto moved = clear({});
+  ASSERT_TRUE(moved.has_value());
+  EXPECT_EQ(moved->lane, 1);
+  EXPECT_NEAR(leader.s_m + moved->speed_mps * 35.0, 3046.0 + 2.25 + 5.0, 1e-9);
+  // The cutter far behind it at its speed: out of its way all the same.
+  EXPECT_EQ(clear({{1, 1800.0, 25.0}})->lane, 1);
+  // The cutter ahead of it in that lane: it would have to get past the cutter; and the cutter
+  // behind it but faster, reaching it before the start: in its way. It stays in its lane and is
+  // sent ahead of the zone there.
+  for (const ActorPlace& cutter : {ActorPlace{1, 2100.0, 25.0}, ActorPlace{1, 1950.0, 33.0}}) {
+    const auto stays = clear({cutter});
+    ASSERT_TRUE(stays.has_value());
+    EXPECT_EQ(stays->lane, 0);
+  }
 }
 
 // A cutter on its way: its slot in the left lane of two, 12 m ahead of the ego at the start, 40 s

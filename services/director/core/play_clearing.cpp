@@ -32,8 +32,13 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   for (const Slot& s : slots) {
     if (s.direction == in.ego.direction) role_lanes.push_back(s.lane);
   }
+  std::vector<ActorPlace> actors;
+  for (const Role& r : roles_) {
+    const ObservedVehicle* v = r.actor == kNoVehicle ? nullptr : find(in, r.actor);
+    if (v != nullptr && v->direction == in.ego.direction) actors.push_back({v->target_lane, v->s_m, v->speed_mps});
+  }
   const ClearingSituation situation{to_clear,   aim.time_s,     in.ego,           aim.ego_s_m,
-                                    role_lanes, setting_.lanes, setting_.director};
+                                    role_lanes, setting_.lanes, setting_.director, actors};
   // Vehicle i, ours from now on, is told to clear out (a cleared one keeps its last command until
   // the handover); a speed is given with the lead actors get (drive_speed_mps).
   auto clear = [&](std::size_t i, const Clearance& c, bool off_a_zone) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace entourage::director {
 
@@ -155,6 +156,43 @@ ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>&
   return out;
 }
 
+namespace {
+// A neighbouring lane of `v`'s in which it can be ahead of every zone of that lane by the start
+// (clearing_time_s early) at a speed within [low, high], out of its actors' way (transport.hpp,
+// ActorPlace); the one that needs the smaller change of speed. Its own desired speed where its present one is
+// enough already.
+std::optional<Clearance> ahead_in_next_lane(const ObservedVehicle& v, const ClearingSituation& at, double t_plan,
+                                            double low, double high) {
+  const int dir = sign(v.direction);
+  const double p = dir * v.s_m;
+  std::optional<Clearance> best;
+  double best_change = 0.0;
+  for (int lane : {v.lane - 1, v.lane + 1}) {
+    if (lane < 0 || lane >= at.lanes.of(v.direction)) continue;
+    double front_p = -std::numeric_limits<double>::infinity();
+    for (const ZoneAtStart& z : at.zones) {
+      if (z.direction == v.direction && z.lane == lane) front_p = std::max(front_p, dir > 0 ? z.to_s_m : -z.from_s_m);
+    }
+    const double target_p = front_p + 0.5 * v.length_m + kZoneMargin_m;
+    const double speed = (target_p - p) / t_plan;
+    if (speed > high) continue;
+    const double drive_mps = std::max(speed, v.speed_mps);
+    // In an actor's way: ahead of it now, and within its reach before the start.
+    const bool in_an_actors_way = std::any_of(at.actors.begin(), at.actors.end(), [&](const ActorPlace& a) {
+      if (a.lane != lane) return false;
+      const double gap_m = p - dir * a.s_m;
+      return gap_m <= 0.0 || gap_m < (a.speed_mps - drive_mps) * at.time_left_s;
+    });
+    if (in_an_actors_way) continue;
+    const double change = std::max(0.0, speed - v.speed_mps);
+    if (best && change >= best_change) continue;
+    best_change = change;
+    best = Clearance{speed <= v.speed_mps ? kOwnDesiredSpeed_mps : std::max(speed, low), lane};
+  }
+  return best;
+}
+}  // namespace
+
 std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSituation& at) {
   const double t = std::max(at.time_left_s, 0.0);
   const int dir = sign(v.direction);
@@ -176,36 +214,41 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
   // it, or fall behind the ego by being passed: it is left to its own driving (it overtakes a
   // slow actor by itself when the oncoming traffic lets it).
   if (t <= 0.0 || at.lanes.of(v.direction) <= 1) return std::nullopt;
+  const double p = dir * v.s_m;
+  const DirectorConfig& cfg = at.cfg;
+  const double low = std::max(0.0, std::max(cfg.min_speed_mps, v.speed_mps - cfg.max_speed_offset_mps));
+  const double high = v.speed_mps + cfg.max_speed_offset_mps;
+  // Out early (clearing_time_s).
+  const double t_plan = clearing_time_s(t);
+  const EgoObservation& ego = at.ego;
+  const bool with_ego = occupies(ego, v.direction, v.lane);
+  const bool ahead_of_ego = dir * v.s_m > dir * ego.s_m;
+  if (with_ego && ahead_of_ego) {
+    if (const auto moved = ahead_in_next_lane(v, at, t_plan, low, high)) return moved;
+  }
   // Ahead of the zone or behind it, whichever needs the smaller change of speed; the zone joined
   // with those of its lane too close to it to stand between.
   const ZoneAtStart zone = joined_zone(*hit, at.zones, v.length_m + 2.0 * kZoneMargin_m);
   const double front_p = dir > 0 ? zone.to_s_m : -zone.from_s_m;
   const double rear_p = dir > 0 ? zone.from_s_m : -zone.to_s_m;
-  const double p = dir * v.s_m;
   const double ahead_p = front_p + 0.5 * v.length_m + kZoneMargin_m;
   const double behind_p = rear_p - 0.5 * v.length_m - kZoneMargin_m;
-  const DirectorConfig& cfg = at.cfg;
-  const double low = std::max(0.0, std::max(cfg.min_speed_mps, v.speed_mps - cfg.max_speed_offset_mps));
-  const double high = v.speed_mps + cfg.max_speed_offset_mps;
   // In the ego's lane it cannot get past the ego, nor the ego past it: a vehicle ahead of the ego
   // stays ahead (asked to fall back behind a zone in front of the ego, it would hold the ego up,
   // and the zone, which moves with the ego, with it).
-  const EgoObservation& ego = at.ego;
-  const bool with_ego = occupies(ego, v.direction, v.lane);
   const double ego_then_p = dir * at.ego_s_then_m;
   const double room_p = 0.5 * (v.length_m + ego.length_m) + kZoneMargin_m;
   auto keeps_order = [&](double target_p) {
     if (!with_ego) return true;
-    return dir * v.s_m > dir * ego.s_m ? target_p > ego_then_p + room_p : target_p < ego_then_p - room_p;
+    return ahead_of_ego ? target_p > ego_then_p + room_p : target_p < ego_then_p - room_p;
   };
-  // Out early (clearing_time_s). When neither way is within the band, the edge of the band
-  // towards the first way that keeps the order: as far out as it gets (it was left with its last
-  // command before, which had asked for too little).
+  // When neither way is within the band, the edge of the band towards the first way that keeps
+  // the order: as far out as it gets (it was left with its last command before, which had asked
+  // for too little).
   // (The target is the edge's road position at the start, reached kClearEarly_s early: a vehicle
   // planned to be behind a zone then drives on past that position before the start, out of a short
   // zone ahead of it. A plan that really falls back slowed the vehicle's lane behind it down and
   // made the plays fail more often: services/director/README.md, Pacing.)
-  const double t_plan = clearing_time_s(t);
   std::optional<Clearance> best;
   std::optional<Clearance> closest;
   for (double target_p : {ahead_p, behind_p}) {

@@ -91,6 +91,20 @@ const ZoneAtStart* zone_hit(const std::vector<ZoneAtStart>& zones, const Observe
 ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>& zones, double gap_m);
 
 // What a vehicle that would stand in a zone at the start is asked to do, if anything can help.
+//
+// A vehicle ahead of the ego in the ego's lane cannot get out of a zone ahead of the ego by its
+// speed alone: the ego's driver closes up behind it at whatever speed it drives (up to the ego's
+// own desired speed), and its own leader holds it in the queue the ego follows. It changes into a
+// neighbouring lane that an actor needs instead, when it can be ahead of every zone of that lane
+// by the start at a speed within the band, is ahead of that lane's actors now (it never has to get
+// past one) and no actor behind it there catches up with it before the start at their present
+// speeds (it would hold that actor up on its way): onto the free lane first, then into such a
+// lane, then by its speed in its own.
+struct ActorPlace {
+  int lane = 0;
+  double s_m = 0.0;
+  double speed_mps = 0.0;
+};
 struct Clearance {
   double speed_mps = 0.0;  // desired speed (kOwnDesiredSpeed_mps: its own, when it only changes lane)
   int lane = -1;
@@ -103,6 +117,7 @@ struct ClearingSituation {
   const std::vector<int>& role_lanes;   // lanes of the actors of the ego's direction
   const Lanes& lanes;
   const DirectorConfig& cfg;
+  std::vector<ActorPlace> actors = {};  // where the actors of the ego's direction are now
 };
 std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSituation& at);
 
