@@ -113,6 +113,29 @@ TEST(Casting, AVehicleThatCannotReachTheSlotInTimeOrMustPassTheEgoOnOneLaneCanno
   EXPECT_EQ(casting_cost(slot, play.roles[0], world[0], blocked, cfg), kInf);
 }
 
+TEST(Casting, AVehicleThatMustPassTheEgoToReachASlotInTheEgosLaneCostsMoreThanACreation) {
+  const PlayConfig play = lead_play();  // 40 m ahead of the ego, in its lane
+  DirectorConfig cfg;
+  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
+  const Lanes lanes{2, 0};
+  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), lanes)[0];
+  // Vehicle 1, 50 m behind the ego in its lane, reaches the slot at 26.25 m/s on average: a small
+  // change of speed and two lane changes, but it must get past the ego, whose speed is the
+  // driver's, and back into the ego's lane ahead of it. A vehicle created out of sight is the
+  // cheaper choice.
+  const std::vector<ObservedVehicle> world{vehicle(1, 1950.0, 25.0)};
+  const CastingSituation at{world, ego, 40.0, 3000.0, lanes, {}};
+  const double cost = casting_cost(slot, play.roles[0], world[0], at, cfg);
+  ASSERT_TRUE(std::isfinite(cost));
+  EXPECT_GT(cost, cfg.max_speed_offset_mps);
+  EXPECT_EQ(cast_roles({slot}, play.roles, {true}, at, cfg), std::vector<int>{-1});
+  // With the ego in the other lane it only has to get past the ego beside it: it is cast.
+  const EgoObservation beside = testing::ego_at(0, 2000.0, 25.0, 1);
+  const CastingSituation passing{world, beside, 40.0, 3000.0, lanes, {}};
+  EXPECT_LT(casting_cost(slot, play.roles[0], world[0], passing, cfg), cfg.max_speed_offset_mps);
+  EXPECT_EQ(cast_roles({slot}, play.roles, {true}, passing, cfg), std::vector<int>{0});
+}
+
 TEST(Casting, OnOneLaneAVehicleWithAnotherBetweenItAndTheEgoCannotPlayARoleBehindAClearZone) {
   const PlayConfig play = lead_play();
   DirectorConfig cfg;

@@ -94,7 +94,9 @@ double casting_cost(const Slot& slot, const PlayRoleConfig& role, const Observed
   // driver's to decide: its order must not depend on it).
   if (one_lane && (b.ego || b.to_pass > 0 || stuck_between(slot, v.s_m, v.id, at))) return kInf;
   const int lane_changes = std::abs(v.lane - slot.lane) + b.vehicles + (b.ego ? 1 : 0);
-  return std::abs(plan.cruise_mps - v.speed_mps) + cfg.lane_change_cost_mps * lane_changes;
+  const bool passes_ego_into_its_lane = b.ego && occupies(at.ego, slot.direction, slot.lane);
+  return std::abs(plan.cruise_mps - v.speed_mps) + cfg.lane_change_cost_mps * lane_changes +
+         (passes_ego_into_its_lane ? creation_cost(cfg) : 0.0);
 }
 
 std::vector<int> cast_roles(const std::vector<Slot>& slots, const std::vector<PlayRoleConfig>& role_configs,

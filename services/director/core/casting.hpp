@@ -2,7 +2,10 @@
 // Casting (paper IV): which vehicle plays which role. A vehicle's cost for a role is how much it
 // must change its driving to be at the role's start in time: the change from its present speed
 // to the average speed that brings it there, plus a lane-change cost for each lane to change and
-// each vehicle to get past. It cannot play the role when that average speed lies outside the
+// each vehicle to get past. A vehicle that must get past the ego to a slot in the ego's lane costs
+// a creation more on top: it needs the ego's speed to be left behind and a gap ahead of the ego to
+// come back in, neither of which the director controls (a lead cast behind the ego sat there for
+// the whole preparation). It cannot play the role when that average speed lies outside the
 // transport band (stage.hpp) or it would have to get past the ego where actors cannot (one lane
 // per direction: actors do not overtake), nor there with a vehicle between it and the ego that
 // would stand in a clear zone at the start (stuck_between). Roles are then assigned jointly
