@@ -186,4 +186,34 @@ std::vector<StreamVehicle> ObservedStream::one_stretch(Random& rng, double lengt
   return out;
 }
 
+std::size_t remove_overlapping(std::vector<StreamVehicle>& stretch) {
+  // Front to back within each lane, each vehicle against the nearest one kept ahead of it.
+  std::vector<std::size_t> order(stretch.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const StreamVehicle& x = stretch[a];
+    const StreamVehicle& y = stretch[b];
+    return x.vehicle.lane != y.vehicle.lane ? x.vehicle.lane < y.vehicle.lane : x.offset_m > y.offset_m;
+  });
+  std::vector<bool> removed(stretch.size(), false);
+  const StreamVehicle* ahead = nullptr;
+  for (std::size_t i : order) {
+    const StreamVehicle& v = stretch[i];
+    const bool same_lane = ahead != nullptr && ahead->vehicle.lane == v.vehicle.lane;
+    if (same_lane && ahead->offset_m - v.offset_m < 0.5 * (ahead->vehicle.length_m + v.vehicle.length_m)) {
+      removed[i] = true;
+      continue;
+    }
+    ahead = &v;
+  }
+  std::vector<StreamVehicle> kept;
+  kept.reserve(stretch.size());
+  for (std::size_t i = 0; i < stretch.size(); ++i) {
+    if (!removed[i]) kept.push_back(stretch[i]);
+  }
+  const std::size_t count = stretch.size() - kept.size();
+  stretch = std::move(kept);
+  return count;
+}
+
 }  // namespace entourage

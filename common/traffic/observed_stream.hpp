@@ -111,4 +111,9 @@ class ObservedStream {
   std::vector<Platoon> platoons_;
 };
 
+// A stretch must not place two vehicles on top of each other: where one overlaps the vehicle ahead
+// of it in its lane (the road simulation the stream was observed in had a collision, and the
+// snapshot caught it), the one behind is removed. Returns how many were removed.
+std::size_t remove_overlapping(std::vector<StreamVehicle>& stretch);
+
 }  // namespace entourage

@@ -35,10 +35,11 @@ int run(const dds::ServiceContext& ctx) {
       [&core] { return static_cast<std::uint32_t>(core.front_zone().size()); });
   const auto& c = core.counters();
   spdlog::info(
-      "generated {} vehicles: {} by {} fills ({} left out for lack of room), {} at the edges from {} platoon arrivals "
-      "({} from behind at their leader's speed, {} platoons dropped, {} still queued)",
-      c.filled + c.placed, c.filled, c.fills, c.fill_skipped, c.placed, c.arrivals, c.at_leader_speed, c.dropped,
-      core.queued());
+      "generated {} vehicles: {} by {} fills ({} left out for lack of room, {} overlapping another in the observed "
+      "stream), {} at the edges from {} platoon arrivals ({} from behind at their leader's speed, {} platoons dropped, "
+      "{} still queued)",
+      c.filled + c.placed, c.filled, c.fills, c.fill_skipped, c.fill_overlapping, c.placed, c.arrivals,
+      c.at_leader_speed, c.dropped, core.queued());
   spdlog::info("front zone: {} vehicles joined it, {} left it far ahead, {} made way for a slow platoon", c.ahead,
                c.left_ahead, c.made_way);
   spdlog::info("platoons arrived / their vehicles / vehicles placed: from behind {}/{}/{}, from ahead {}/{}/{}, "

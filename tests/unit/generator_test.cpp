@@ -31,6 +31,32 @@ void expect_no_overlap(const std::vector<Handoff>& births, const EgoObservation&
   }
 }
 
+TEST(Generator, AStretchNeverPlacesTwoVehiclesOnTopOfEachOther) {
+  // An observed stream whose road simulation had a collision: in lane 0 a car 3 m behind another's
+  // centre (they overlap), a truck behind them with room; in lane 1 a car beside the pair.
+  auto at = [](double offset_m, int lane, double length_m) {
+    StreamVehicle sv;
+    sv.offset_m = offset_m;
+    sv.vehicle.lane = lane;
+    sv.vehicle.length_m = length_m;
+    return sv;
+  };
+  std::vector<StreamVehicle> stretch{at(100.0, 0, 4.5), at(97.0, 0, 4.5), at(60.0, 0, 16.5), at(98.0, 1, 4.5),
+                                     at(120.0, 0, 4.5)};
+  EXPECT_EQ(remove_overlapping(stretch), 1U);
+  ASSERT_EQ(stretch.size(), 4U);
+  // The one behind went; the others keep their order; touching bumpers (4.5 m apart) is no overlap.
+  EXPECT_DOUBLE_EQ(stretch[0].offset_m, 100.0);
+  EXPECT_DOUBLE_EQ(stretch[1].offset_m, 60.0);
+  EXPECT_DOUBLE_EQ(stretch[2].offset_m, 98.0);
+  std::vector<StreamVehicle> touching{at(100.0, 0, 4.5), at(95.5, 0, 4.5)};
+  EXPECT_EQ(remove_overlapping(touching), 0U);
+  // A chain of three on top of each other: only the front one stays.
+  std::vector<StreamVehicle> chain{at(50.0, 0, 4.5), at(48.0, 0, 4.5), at(46.0, 0, 4.5)};
+  EXPECT_EQ(remove_overlapping(chain), 2U);
+  EXPECT_DOUBLE_EQ(chain.front().offset_m, 50.0);
+}
+
 TEST(Generator, InitialFillHasTheStreamsDensityAndNoOverlap) {
   const ScenarioConfig sc = freeway_scenario();
   for (std::uint64_t seed : {1ULL, 2ULL, 61ULL}) {

@@ -162,12 +162,15 @@ void GeneratorCore::fill(const StepInput& in, StepOutput& out) {
     // A stretch of the observed stream as long as the window, laid from the window's rear end
     // in the direction of travel; vehicles that would overlap the ego (or, after a jump, vehicles
     // already there) are left out.
-    // The stretch is consistent in itself; it is checked against what was there before it only.
+    // Within the stretch only overlapping pairs are left out (the stream is otherwise consistent
+    // in itself); against what was there before it, every vehicle needs its room.
     // In the ego's direction it reaches on into the front zone.
     const double back_p = dir == Direction::kForward ? w.rear_edge_m : -w.front_edge_m;
     const double length = w.front_edge_m - w.rear_edge_m + (dir == Direction::kForward ? config_.front_zone_m : 0.0);
+    std::vector<StreamVehicle> stretch = stream.stretch(rng_, length, config_.fill_candidates);
+    counters_.fill_overlapping += remove_overlapping(stretch);
     std::vector<StreamVehicle> accepted;
-    for (const StreamVehicle& sv : stream.stretch(rng_, length, config_.fill_candidates)) {
+    for (const StreamVehicle& sv : stretch) {
       if (fits(dir, sv.vehicle.lane, back_p + sv.offset_m, sv.vehicle)) {
         accepted.push_back(sv);
       } else {

@@ -55,6 +55,7 @@ struct Counters {
   std::array<std::uint64_t, kEntrances> placed_at{};    // vehicles, per entrance
   std::uint64_t filled = 0;         // vehicles placed by initial fills
   std::uint64_t fill_skipped = 0;   // fill vehicles that would have overlapped the ego or others
+  std::uint64_t fill_overlapping = 0;  // fill vehicles left out: they overlapped another of the stretch
   std::uint64_t arrivals = 0;       // platoons arrived at the edges
   std::uint64_t placed = 0;         // vehicles that entered at the edges
   std::uint64_t waited_steps = 0;   // platoon-steps spent queued at an edge for lack of room
