@@ -254,6 +254,24 @@ TEST(Staging, ARoleBesideTheEgoWaitsAheadOfItsStartUntilTheApproach) {
   EXPECT_DOUBLE_EQ(way_to(slot, 60.0, play.roles[0], Direction::kForward, 0, 60.0, off).slot.s_m, slot.s_m);
 }
 
+TEST(Staging, AnEgoOvertakingInTheOncomingLaneKeepsThePlayStagedBesideItsOwnLane) {
+  PlayConfig play = lead_play();
+  play.clear = {{0, 3.0, 50.0}};
+  const Lanes rural{1, 1};
+  // Passing on a two-lane road, the ego drives in lane 1 of its direction's numbering: the
+  // oncoming lane. The play stays staged beside lane 0, where it comes back, and its zone stays.
+  EgoObservation passing = testing::ego_at(0, 2000.0, 25.0, 1);
+  EXPECT_EQ(staging_lane(passing, rural), 0);
+  const std::vector<ZoneAtStart> zones = zones_of(play, Direction::kForward, staging_lane(passing, rural), 3000.0, rural);
+  ASSERT_EQ(zones.size(), 1U);
+  EXPECT_EQ(zones[0].lane, 0);
+  EXPECT_TRUE(zones_of(play, Direction::kForward, passing.target_lane, 3000.0, rural).empty());  // what it was
+  // Moving back: its target lane. On a freeway every lane it uses is its own.
+  passing.target_lane = 0;
+  EXPECT_EQ(staging_lane(passing, rural), 0);
+  EXPECT_EQ(staging_lane(testing::ego_at(0, 2000.0, 25.0, 1), Lanes{2, 2}), 1);
+}
+
 TEST(Staging, APlayThatDoesNotFitBesideTheEgosLaneIsMirrored) {
   PlayConfig play = lead_play();
   play.roles[0].lane_offset = 1;  // a cutter in the lane left of the ego

@@ -208,8 +208,8 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
   }
   const Aim aim = aim_of(pred.time_s, play_.trigger2_s_m, pred.speed_mps, in.ego, kAimHorizon_s);
   // The lane the ego is in, or moving to.
-  staged_ = staged_beside(play_, in.ego.target_lane, setting_.lanes);
-  const std::vector<Slot> slots = slots_of(staged_, in.ego.direction, in.ego.target_lane, aim, setting_.lanes);
+  staged_ = staged_beside(play_, staged_lane(in), setting_.lanes);
+  const std::vector<Slot> slots = slots_of(staged_, in.ego.direction, staged_lane(in), aim, setting_.lanes);
   // Actors that left the world (beyond the window) are lost: their roles are cast again.
   for (Role& r : roles_) {
     if (r.actor == kNoVehicle || find(in, r.actor) != nullptr) continue;
@@ -248,7 +248,7 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
   const CastingSituation at{in.world,       in.ego,
                             aim.time_s,     aim.ego_s_m,
                             setting_.lanes, setting_.type_accel_mps2,
-                            zones_of(staged_, in.ego.direction, in.ego.target_lane, aim.ego_s_m, setting_.lanes)};
+                            zones_of(staged_, in.ego.direction, staged_lane(in), aim.ego_s_m, setting_.lanes)};
   // Vehicles this play cleared off the stage may be cast too (one in the way of an actor that
   // cannot get into its lane may be the better actor).
   std::vector<bool> castable = in.available;
@@ -301,7 +301,7 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
     if (v == nullptr) continue;  // a created vehicle not seen yet
     const double type_accel = accel_of(setting_.type_accel_mps2, v->type_index);
     const double rate = transport_rate_mps2(setting_.director, type_accel);
-    const Waypoint way = way_to(slots[r], aim_time_s, staged_.roles[r], in.ego.direction, in.ego.target_lane,
+    const Waypoint way = way_to(slots[r], aim_time_s, staged_.roles[r], in.ego.direction, staged_lane(in),
                                 time_to_start_s, setting_.director);
     const TransportCommand t = transport(way.slot, *v, way.time_s, role.command_mps, in.dt_s, in.world, in.ego,
                                          setting_.lanes, setting_.director, rate, type_accel);
@@ -320,7 +320,7 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
 }
 
 std::string PlayRun::start_problems(const PlayInput& in) {
-  staged_ = staged_beside(play_, in.ego.target_lane, setting_.lanes);
+  staged_ = staged_beside(play_, staged_lane(in), setting_.lanes);
   const int dir = sign(in.ego.direction);
   std::string problems;
   auto problem = [&](const std::string& p) { problems += (problems.empty() ? "" : "; ") + p; };
@@ -337,7 +337,7 @@ std::string PlayRun::start_problems(const PlayInput& in) {
     role.position_error_m = ahead - rc.ahead_m;
     role.speed_error_mps = v->speed_mps - speed;
     // The lane the ego is in or moving to, as the slots were planned.
-    const int lane = rc.direction == Direction::kForward ? in.ego.target_lane + rc.lane_offset : rc.lane_offset;
+    const int lane = rc.direction == Direction::kForward ? staged_lane(in) + rc.lane_offset : rc.lane_offset;
     if (std::abs(role.position_error_m) > rc.position_tolerance_m) {
       problem(rc.name + ": " + fmt1(role.position_error_m) + " m from its start position");
     }
@@ -347,7 +347,7 @@ std::string PlayRun::start_problems(const PlayInput& in) {
     if (v->lane != lane && v->target_lane != lane) problem(rc.name + ": in lane " + std::to_string(v->lane) + ", not " + std::to_string(lane));
   }
   // The zones around where the ego is now.
-  const std::vector<ZoneAtStart> zones = zones_of(staged_, in.ego.direction, in.ego.target_lane, in.ego.s_m, setting_.lanes);
+  const std::vector<ZoneAtStart> zones = zones_of(staged_, in.ego.direction, staged_lane(in), in.ego.s_m, setting_.lanes);
   for (const ObservedVehicle& v : in.world) {
     const bool actor = std::any_of(roles_.begin(), roles_.end(), [&](const Role& r) { return r.actor == v.id; });
     if (actor) continue;

@@ -145,6 +145,8 @@ class PlayRun {
   bool is_cleared(VehicleId id) const;  // asked by this play to leave a zone or keep its lane
   void report(const PlayInput& in, PlayOutput& out, std::string detail);
   double ego_progress(const EgoObservation& ego) const { return sign(ego.direction) * ego.s_m; }
+  // The lane the play is staged beside (stage.hpp, staging_lane).
+  int staged_lane(const PlayInput& in) const { return staging_lane(in.ego, setting_.lanes); }
 
   PlayConfig play_;
   PlayConfig staged_;  // play_ as staged beside the ego's lane (stage.hpp, staged_beside)

@@ -19,7 +19,7 @@ constexpr double kBesideZone_m = 30.0;
 
 void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
                           PlayOutput& out) {
-  const std::vector<ZoneAtStart> zones = zones_of(staged_, in.ego.direction, in.ego.target_lane, aim.ego_s_m, setting_.lanes);
+  const std::vector<ZoneAtStart> zones = zones_of(staged_, in.ego.direction, staged_lane(in), aim.ego_s_m, setting_.lanes);
   // What to clear: the play's zones and the room the actors need at their starts.
   std::vector<double> lengths;
   for (std::size_t r = 0; r < roles_.size(); ++r) {

@@ -21,6 +21,10 @@ bool fits(const PlayConfig& play, int ego_lane, int side, const Lanes& lanes) {
 }
 }  // namespace
 
+int staging_lane(const EgoObservation& ego, const Lanes& lanes) {
+  return std::clamp(ego.target_lane, 0, std::max(0, lanes.of(ego.direction) - 1));
+}
+
 PlayConfig staged_beside(const PlayConfig& play, int ego_lane, const Lanes& lanes) {
   if (fits(play, ego_lane, 1, lanes) || !fits(play, ego_lane, -1, lanes)) return play;
   PlayConfig m = play;

@@ -32,6 +32,12 @@ inline double accel_of(const TypeAccels& a, std::uint8_t type_index) {
   return type_index < a.size() ? a[type_index] : 0.0;
 }
 
+// The lane of the ego's direction a play is staged beside: the lane the ego is in or moving to,
+// or, while it overtakes in an oncoming lane (a lane index beyond its direction's lanes), the
+// lane of its own direction nearest to it, where it comes back (a staging that followed it out
+// dropped the clear zones, and a truck's actor was recast beyond the one just cast).
+int staging_lane(const EgoObservation& ego, const Lanes& lanes);
+
 // The play as staged beside an ego in `ego_lane`: unchanged if every lane it uses relative to the
 // ego (forward roles, clear zones) exists; otherwise, if the mirror image fits, mirrored: those
 // lane offsets and its scripted lane changes negated, left and right indicators swapped (a car
