@@ -41,6 +41,25 @@ double percentile(std::vector<double> x, double q) {
   return x[std::min(i, x.size() - 1)];
 }
 
+// One group's per-run largest acceleration, deceleration and jerk (runs where the group drove in
+// the inner region while the play was prepared), printed as median / p95 / max over the runs.
+struct ExtremesOverRuns {
+  std::vector<double> accel, decel, jerk;
+  void add(const bench::MotionExtremes& m) {
+    if (m.vehicle_steps == 0) return;
+    accel.push_back(m.max_accel_mps2);
+    decel.push_back(m.max_decel_mps2);
+    jerk.push_back(m.max_jerk_mps3);
+  }
+  void print(const char* group) const {
+    std::printf("  %-11s accel %.2f / %.2f / %.2f m/s2   decel %.2f / %.2f / %.2f m/s2   jerk %.1f / %.1f / %.1f m/s3"
+                "   (%zu runs)\n",
+                group, percentile(accel, 0.5), percentile(accel, 0.95), percentile(accel, 1.0), percentile(decel, 0.5),
+                percentile(decel, 0.95), percentile(decel, 1.0), percentile(jerk, 0.5), percentile(jerk, 0.95),
+                percentile(jerk, 1.0), accel.size());
+  }
+};
+
 // The kind of one problem of a start condition ("truck: 12.0 m from its start position" is
 // "truck: position").
 std::string kind_of(const std::string& problem) {
@@ -78,7 +97,8 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
                 const std::vector<bench::EgoVariant>& variants) {
   std::vector<double> pos_t2, speed_t2;  // on passing trigger point 2
   std::vector<double> held_up;  // s, per run
-  std::vector<double> pos, speed, est, a_acc, a_dec, a_jerk, o_acc, o_dec, o_jerk, a_beside, o_beside, slowed, waits, beyond;
+  std::vector<double> pos, speed, est, a_beside, o_beside, slowed, waits, beyond;
+  ExtremesOverRuns actors, cleared, autonomous;
   int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
   std::map<std::string, int> causes;
   std::map<std::string, int> missing_at_t2;  // runs in which each kind was missing at trigger point 2
@@ -105,14 +125,9 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
     speed.push_back(std::abs(r.speed_error_mps));
     est.push_back(std::abs(r.estimate_error_s));
     held_up.push_back(r.held_up_s);
-    if (r.actors.vehicle_steps > 0) {
-      a_acc.push_back(r.actors.max_accel_mps2);
-      a_dec.push_back(r.actors.max_decel_mps2);
-      a_jerk.push_back(r.actors.max_jerk_mps3);
-    }
-    o_acc.push_back(r.autonomous.max_accel_mps2);
-    o_dec.push_back(r.autonomous.max_decel_mps2);
-    o_jerk.push_back(r.autonomous.max_jerk_mps3);
+    actors.add(r.actors);
+    cleared.add(r.cleared);
+    autonomous.add(r.autonomous);
     a_beside.push_back(r.actor_beside_ego_s);
     if (r.traffic_slowed_to() > 0.0) slowed.push_back(r.traffic_slowed_to());
     o_beside.push_back(r.autonomous_beside_ego_s);
@@ -147,14 +162,9 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
               "p95 %.1f  max %.1f; more than %.0f s in %td runs\n",
               percentile(held_up, 0.5), percentile(held_up, 0.95), percentile(held_up, 1.0), kLongHoldUp_s, long_holds);
   std::printf("while being moved into place (inner region), per run largest: median / p95 / max\n");
-  std::printf("  actors      accel %.2f / %.2f / %.2f m/s2   decel %.2f / %.2f / %.2f m/s2   jerk %.1f / %.1f / %.1f m/s3\n",
-              percentile(a_acc, 0.5), percentile(a_acc, 0.95), percentile(a_acc, 1.0), percentile(a_dec, 0.5),
-              percentile(a_dec, 0.95), percentile(a_dec, 1.0), percentile(a_jerk, 0.5), percentile(a_jerk, 0.95),
-              percentile(a_jerk, 1.0));
-  std::printf("  autonomous  accel %.2f / %.2f / %.2f m/s2   decel %.2f / %.2f / %.2f m/s2   jerk %.1f / %.1f / %.1f m/s3\n",
-              percentile(o_acc, 0.5), percentile(o_acc, 0.95), percentile(o_acc, 1.0), percentile(o_dec, 0.5),
-              percentile(o_dec, 0.95), percentile(o_dec, 1.0), percentile(o_jerk, 0.5), percentile(o_jerk, 0.95),
-              percentile(o_jerk, 1.0));
+  actors.print("actors");
+  cleared.print("cleared");
+  autonomous.print("autonomous");
   std::printf("traffic of the ego's direction in the inner region, trigger point 1 to 2, mean speed with the director\n"
               "  of that without, per run: median %.2f  p5 %.2f  min %.2f; below 0.8 in %td runs\n",
               percentile(slowed, 0.5), percentile(slowed, 0.05),

@@ -212,7 +212,9 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
       if (it != last_accel.end() && it->second.first + 1 == v.step && preparing) {
         const double jerk = (v.accel_mps2 - it->second.second) / dt;
         if (v.control == ControlMode::kTransported) {
-          r.actors.add(v.accel_mps2, jerk);
+          const std::vector<VehicleId> actors = cores.director().plays().front().actors();
+          const bool actor = std::find(actors.begin(), actors.end(), v.id) != actors.end();
+          (actor ? r.actors : r.cleared).add(v.accel_mps2, jerk);
         } else if (v.control == ControlMode::kAutonomous) {
           r.autonomous.add(v.accel_mps2, jerk);
         }

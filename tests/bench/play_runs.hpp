@@ -64,7 +64,9 @@ struct PlayRunResult {
   double held_up_s = 0.0;
   double handover_wait_s = 0.0;      // handed over this long after the ego passed trigger point 2
   double handover_beyond_m = 0.0;    // and the ego this far beyond it
-  MotionExtremes actors;             // while transported, in the inner region (micro)
+  MotionExtremes actors;             // the roles' actors while transported, in the inner region (micro)
+  MotionExtremes cleared;            // the other vehicles under a transport command (asked to leave a
+                                     // zone, make way, let one in or keep their lane), same steps
   MotionExtremes autonomous;         // the autonomous vehicles of the inner region, same steps
   // The longest a vehicle drove beside the ego without a break while the play was prepared (in a
   // neighbouring lane of its direction, its centre within kBesideEgo_m of the ego's): one under a

@@ -68,6 +68,12 @@ std::vector<VehicleId> PlayRun::holds() const {
   return out;
 }
 
+std::vector<VehicleId> PlayRun::actors() const {
+  std::vector<VehicleId> out;
+  for (const Role& r : roles_) out.push_back(r.actor);
+  return out;
+}
+
 const ObservedVehicle* PlayRun::find(const PlayInput& in, VehicleId id) const {
   auto it = std::lower_bound(in.world.begin(), in.world.end(), id,
                              [](const ObservedVehicle& v, VehicleId x) { return v.id < x; });

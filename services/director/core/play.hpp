@@ -105,6 +105,8 @@ class PlayRun {
   const PlayConfig& config() const { return play_; }
   // Vehicles this play holds (actors and cleared vehicles), so no other play casts them.
   std::vector<VehicleId> holds() const;
+  // The vehicles playing its roles now (kNoVehicle for a role without one).
+  std::vector<VehicleId> actors() const;
 
  private:
   struct Role {
