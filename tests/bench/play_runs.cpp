@@ -203,6 +203,7 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
     const bool preparing = r.final_phase == director::PlayPhase::kPreparing || r.final_phase == director::PlayPhase::kCast ||
                            r.final_phase == director::PlayPhase::kTransporting;
     const std::vector<ObservedVehicle>& world = in.world_prev;  // published for k - 1
+    const std::vector<VehicleId> actors = cores.director().plays().front().actors();
     for (const ObservedVehicle& v : world) {
       if (v.owner.role != Role::kMicro) {
         last_accel.erase(v.id);
@@ -212,7 +213,6 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
       if (it != last_accel.end() && it->second.first + 1 == v.step && preparing) {
         const double jerk = (v.accel_mps2 - it->second.second) / dt;
         if (v.control == ControlMode::kTransported) {
-          const std::vector<VehicleId> actors = cores.director().plays().front().actors();
           const bool actor = std::find(actors.begin(), actors.end(), v.id) != actors.end();
           (actor ? r.actors : r.cleared).add(v.accel_mps2, jerk);
         } else if (v.control == ControlMode::kAutonomous) {
