@@ -126,10 +126,14 @@ TEST(Transport, ZonesOfALaneTooCloseToStandBetweenAreClearedAsOne) {
   EXPECT_DOUBLE_EQ(joined_zone(c, zones, 14.5).from_s_m, 200.0);
 }
 
-TEST(Transport, AClearedVehicleAheadOfTheEgoThatCannotMakeItInTimeDrivesAtTheTopOfTheBand) {
-  const Lanes lanes{2, 0};
+// The ego in the right lane of two, at 2000 m and 25 m/s, with the director's defaults.
+struct EgoInTheRightLaneOfTwo : ::testing::Test {
   DirectorConfig cfg;
+  const Lanes lanes{2, 0};
   const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0, 0);
+};
+
+TEST_F(EgoInTheRightLaneOfTwo, AClearedVehicleAheadOfTheEgoThatCannotMakeItInTimeDrivesAtTheTopOfTheBand) {
   // Both lanes zones from 5 to 60 m ahead at the start, 10 s from now; vehicle 1 ends 20 m ahead
   // of the ego, in the ego's lane: it must be 47 m further ahead, 9.4 m/s faster over the 5 s
   // planned: beyond the 8 m/s band.
@@ -143,10 +147,7 @@ TEST(Transport, AClearedVehicleAheadOfTheEgoThatCannotMakeItInTimeDrivesAtTheTop
   EXPECT_EQ(top->lane, 0);
 }
 
-TEST(Transport, TheEgosLeaderInAZoneMovesAheadInTheActorsLaneOnlyOutOfTheActorsWay) {
-  const Lanes lanes{2, 0};
-  DirectorConfig cfg;
-  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0, 0);
+TEST_F(EgoInTheRightLaneOfTwo, TheEgosLeaderInAZoneMovesAheadInTheActorsLaneOnlyOutOfTheActorsWay) {
   // A cut-in 40 s from now (ego then at 3000 m): the ego's lane a zone from 3 to 60 m ahead, the
   // cutter's room in the left lane from 3008 to 3046 m. The ego's leader, 45 m ahead of it at its
   // speed, would stand in the zone: by its speed alone it stays in the queue the ego follows.
@@ -176,12 +177,9 @@ TEST(Transport, TheEgosLeaderInAZoneMovesAheadInTheActorsLaneOnlyOutOfTheActorsW
 
 // A cutter on its way: its slot in the left lane of two, 12 m ahead of the ego at the start, 40 s
 // from now; the actor 100 m behind the ego in that lane, the ego in the right lane.
-struct CutterOnItsWay : ::testing::Test {
-  DirectorConfig cfg;
-  const Lanes lanes{2, 0};
+struct CutterOnItsWay : EgoInTheRightLaneOfTwo {
   const Slot slot{Direction::kForward, 1, 3012.0, 26.0};
   const ObservedVehicle actor = vehicle(1, 1900.0, 26.0, 1);
-  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0, 0);
 };
 
 TEST_F(CutterOnItsWay, AnActorHeldUpPassesOnlyByALaneInWhichItIsNotHeldUpAsWell) {

@@ -159,8 +159,8 @@ ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>&
 namespace {
 // A neighbouring lane of `v`'s in which it can be ahead of every zone of that lane by the start
 // (clearing_time_s early) at a speed within [low, high], out of its actors' way (transport.hpp,
-// ActorPlace); the one that needs the smaller change of speed. Its own desired speed where its present one is
-// enough already.
+// ActorPlace); the one that needs the smaller change of speed. Its own desired speed where its
+// present one is enough already.
 std::optional<Clearance> ahead_in_next_lane(const ObservedVehicle& v, const ClearingSituation& at, double t_plan,
                                             double low, double high) {
   const int dir = sign(v.direction);
