@@ -164,30 +164,29 @@ ObservedVehicle from_msg(const msg::VehicleState& m) {
 }
 
 msg::VehicleState to_msg(const VehicleReport& r, ServiceId owner, Step step, double time_s, const Road& road) {
-  const Vehicle& v = r.vehicle;
   msg::VehicleState m;
-  m.id(v.id);
+  m.id(r.id);
   m.step(step);
   m.time_s(time_s);
   m.owner(owner.code());
   m.region(static_cast<uint8_t>(r.region));
-  m.type_index(v.type_index);
-  m.indicator(static_cast<uint8_t>(v.indicator()));
-  m.control(static_cast<uint8_t>(v.control.mode));
-  m.direction(static_cast<int16_t>(sign(v.direction)));
-  m.lane(static_cast<int16_t>(v.lane));
-  m.target_lane(static_cast<int16_t>(v.target_lane()));
-  m.s_m(v.s_m);
-  const double d = lateral_offset_m(road, v);
+  m.type_index(r.type_index);
+  m.indicator(static_cast<uint8_t>(r.indicator));
+  m.control(static_cast<uint8_t>(r.control));
+  m.direction(static_cast<int16_t>(sign(r.direction)));
+  m.lane(static_cast<int16_t>(r.lane));
+  m.target_lane(static_cast<int16_t>(r.target_lane));
+  m.s_m(r.s_m);
+  const double d = lateral_offset_m(road, r);
   m.d_m(d);
-  const Pose pose = road.pose(v.s_m, d, v.direction);
+  const Pose pose = road.pose(r.s_m, d, r.direction);
   m.x_m(pose.x_m);
   m.y_m(pose.y_m);
   m.heading_rad(pose.heading_rad);
-  m.speed_mps(v.speed_mps);
-  m.accel_mps2(v.accel_mps2);
-  m.length_m(v.length_m);
-  m.width_m(v.width_m);
+  m.speed_mps(r.speed_mps);
+  m.accel_mps2(r.accel_mps2);
+  m.length_m(r.length_m);
+  m.width_m(r.width_m);
   return m;
 }
 

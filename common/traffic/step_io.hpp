@@ -25,9 +25,42 @@ struct StepInput {
   std::vector<ActorCommand> commands;       // director commands written at step - 1, by vehicle id
 };
 
+// What a core publishes of a vehicle at a step: the world-state topic's fields (where it is, how
+// it moves, what it looks like and signals), not its driver, which travels only in handoffs. A
+// record of some 70 bytes instead of the vehicle's 480: every core copies one per owned vehicle
+// at every step (services/meso/README.md, *Cost*).
 struct VehicleReport {
-  Vehicle vehicle;
+  VehicleReport() = default;
+  VehicleReport(const Vehicle& v, Region r)
+      : id(v.id),
+        region(r),
+        type_index(v.type_index),
+        direction(v.direction),
+        indicator(v.indicator()),
+        control(v.control.mode),
+        lane(v.lane),
+        target_lane(v.target_lane()),
+        lateral_fraction(v.lane_change.lateral_fraction()),
+        s_m(v.s_m),
+        speed_mps(v.speed_mps),
+        accel_mps2(v.accel_mps2),
+        length_m(v.length_m),
+        width_m(v.width_m) {}
+
+  VehicleId id = 0;
   Region region = Region::kOutside;
+  std::uint8_t type_index = 0;
+  Direction direction = Direction::kForward;
+  Indicator indicator = Indicator::kOff;
+  ControlMode control = ControlMode::kAutonomous;
+  int lane = 0;
+  int target_lane = 0;            // the second lane it occupies while moving sideways (else `lane`)
+  double lateral_fraction = 0.0;  // how far it has moved from `lane` towards `target_lane`, 0..1
+  double s_m = 0.0;
+  double speed_mps = 0.0;
+  double accel_mps2 = 0.0;
+  double length_m = 4.5;
+  double width_m = 1.8;
 };
 
 struct StepOutput {

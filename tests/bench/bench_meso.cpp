@@ -58,10 +58,10 @@ class Digest {
   }
   void add(const StepOutput& out) {
     for (const VehicleReport& r : out.states) {
-      add(static_cast<std::uint64_t>(r.vehicle.id));
-      add(r.vehicle.s_m);
-      add(r.vehicle.speed_mps);
-      add(static_cast<std::uint64_t>(r.vehicle.target_lane()));
+      add(static_cast<std::uint64_t>(r.id));
+      add(r.s_m);
+      add(r.speed_mps);
+      add(static_cast<std::uint64_t>(r.target_lane));
     }
     for (const Handoff& h : out.handoffs) {
       add(static_cast<std::uint64_t>(h.vehicle.id));

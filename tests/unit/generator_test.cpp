@@ -82,7 +82,7 @@ TEST(Generator, InitialFillHasTheStreamsDensityAndNoOverlap) {
       EXPECT_LE(h.vehicle.s_m, w.front_edge_m);
     }
     // the generator keeps what lies just ahead of the window, and publishes it
-    for (const auto& r : out.states) EXPECT_GT(r.vehicle.s_m, w.front_edge_m);
+    for (const auto& r : out.states) EXPECT_GT(r.s_m, w.front_edge_m);
     EXPECT_EQ(out.states.size(), g.front_zone().size());
   }
 }

@@ -46,15 +46,15 @@ std::vector<ObservedVehicle> as_world(const StepOutput& out, ServiceId owner) {
   std::vector<ObservedVehicle> w;
   for (const auto& r : out.states) {
     ObservedVehicle o;
-    o.id = r.vehicle.id;
+    o.id = r.id;
     o.owner = owner;
-    o.direction = r.vehicle.direction;
-    o.lane = r.vehicle.lane;
-    o.target_lane = r.vehicle.target_lane();
-    o.s_m = r.vehicle.s_m;
-    o.speed_mps = r.vehicle.speed_mps;
-    o.accel_mps2 = r.vehicle.accel_mps2;
-    o.length_m = r.vehicle.length_m;
+    o.direction = r.direction;
+    o.lane = r.lane;
+    o.target_lane = r.target_lane;
+    o.s_m = r.s_m;
+    o.speed_mps = r.speed_mps;
+    o.accel_mps2 = r.accel_mps2;
+    o.length_m = r.length_m;
     w.push_back(o);
   }
   return w;
@@ -158,7 +158,7 @@ TEST(MesoCore, VehiclesLeavingAheadGoOnInTheFrontZoneOthersRetire) {
   EXPECT_EQ(out.handoffs[0].vehicle.id, 1U);
   EXPECT_EQ(out.handoffs[0].to_role, Role::kGenerator);
   ASSERT_EQ(out.states.size(), 1U);
-  EXPECT_EQ(out.states[0].vehicle.id, 1U);
+  EXPECT_EQ(out.states[0].id, 1U);
   // the oncoming one behind the window: retired, no longer published
   EXPECT_EQ(out.handoffs[1].vehicle.id, 2U);
   EXPECT_EQ(out.handoffs[1].to_role, Role::kNone);

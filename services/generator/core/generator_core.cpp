@@ -361,7 +361,7 @@ void GeneratorCore::hand_over(const StepInput& in, StepOutput& out) {
     ++counters_.left_ahead;
   }
   std::sort(out.states.begin(), out.states.end(),
-            [](const VehicleReport& a, const VehicleReport& b) { return a.vehicle.id < b.vehicle.id; });
+            [](const VehicleReport& a, const VehicleReport& b) { return a.id < b.id; });
 }
 
 void GeneratorCore::place(const StepInput& in, StepOutput& out) {

@@ -158,7 +158,7 @@ StepOutput MesoCore::hand_off(const StepInput& in) {
   for (const Vehicle& v : fleet_.vehicles()) out.states.push_back({v, w.region_of(v.s_m)});
   // Both runs (those leaving ahead, then the rest of the fleet) are in id order already: merged,
   // not sorted (a sort moved these large records around at every step).
-  const auto by_id = [](const VehicleReport& a, const VehicleReport& b) { return a.vehicle.id < b.vehicle.id; };
+  const auto by_id = [](const VehicleReport& a, const VehicleReport& b) { return a.id < b.id; };
   std::inplace_merge(out.states.begin(), out.states.begin() + static_cast<std::ptrdiff_t>(ahead.size()),
                      out.states.end(), by_id);
   auto leaving = fleet_.extract_if([&](const Vehicle& v) {
