@@ -46,11 +46,13 @@ bool Fleet::owns(VehicleId id) const {
   return std::binary_search(vehicles_.begin(), vehicles_.end(), probe, by_id);
 }
 
-std::size_t adopt_handoffs(Fleet& fleet, HandoffInbox& inbox, std::vector<Handoff> handoffs, Step step, double dt_s) {
+std::size_t adopt_handoffs(Fleet& fleet, HandoffInbox& inbox, std::vector<Handoff> handoffs, Step step, double dt_s,
+                           std::vector<VehicleId>* joined) {
   const Step last = step == 0 ? 0 : step - 1;
   std::size_t n = 0;
   for (const Handoff& h : inbox.accept(std::move(handoffs))) {
     fleet.adopt(h, last, dt_s);
+    if (joined != nullptr) joined->push_back(h.vehicle.id);
     ++n;
   }
   return n;

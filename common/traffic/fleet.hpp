@@ -47,8 +47,10 @@ class Fleet {
 };
 
 // Applies the handoffs addressed to `inbox`'s service (each exactly once) to the fleet, the state
-// each carries brought forward to the step before `step` if it is late; returns how many joined.
-std::size_t adopt_handoffs(Fleet& fleet, HandoffInbox& inbox, std::vector<Handoff> handoffs, Step step, double dt_s);
+// each carries brought forward to the step before `step` if it is late; returns how many joined
+// (and their ids through `joined`, if given).
+std::size_t adopt_handoffs(Fleet& fleet, HandoffInbox& inbox, std::vector<Handoff> handoffs, Step step, double dt_s,
+                           std::vector<VehicleId>* joined = nullptr);
 
 // Fills `index` with the fleet, every vehicle of the world that the fleet does not own (the
 // world's copy of owned vehicles is the fleet's own state), and the ego.

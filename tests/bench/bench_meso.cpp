@@ -81,6 +81,7 @@ struct LiveRun {
   std::array<std::uint64_t, kCores> digest{};
   std::array<std::uint64_t, kCores> published{};  // vehicle states, over the run
   std::array<double, kCores> live_cpu_s{};  // timed step by step, the cores interleaved
+  meso::Counters meso;                      // meso's own counts over the run
   bool reached_road_end = false;
 };
 
@@ -128,6 +129,7 @@ LiveRun run_live(const ScenarioConfig& sc, std::uint64_t seed, Step last_step,
     }
   }
   for (std::size_t c = 0; c < kCores; ++c) run.digest[c] = digests[c].value();
+  run.meso = cores.meso().counters();
   return run;
 }
 
@@ -153,10 +155,12 @@ double replay_cpu_s(Core core, const std::vector<StepInput>& inputs, std::uint64
 
 struct Figures {
   std::uint64_t steps = 0;
+  double seconds_per_step = 0.1;
   std::array<double, kCores> cpu_s{};     // the fastest replay, whole run
   std::array<double, kCores> live_cpu_s{};
   std::array<std::uint64_t, kCores> vehicle_steps{};
   std::array<std::uint64_t, kCores> digest{};
+  meso::Counters meso;
   bool reached_road_end = false;
 
   double us_per_step(std::size_t c) const { return 1e6 * cpu_s[c] / static_cast<double>(steps); }
@@ -183,10 +187,12 @@ Configuration run_configuration(const ScenarioConfig& sc, std::uint64_t seed, St
   c.run = run_live(sc, seed, last_step, &c.generator);
   Figures& f = c.figures;
   f.steps = c.run.inputs.size();
+  f.seconds_per_step = sc.step_s;
   f.live_cpu_s = c.run.live_cpu_s;
   f.vehicle_steps = c.run.vehicle_steps;
   f.digest = c.run.digest;
   f.reached_road_end = c.run.reached_road_end;
+  f.meso = c.run.meso;
   return c;
 }
 
@@ -267,6 +273,15 @@ void print_vehicle_costs(const Figures& micro_only, const Figures& split) {
               "(issue 4 asks at least 10)\n",
               micro_cost, micro_only.us_per_vehicle_step(kMicroCore), meso_cost,
               meso_cost > 0.0 ? micro_cost / meso_cost : 0.0);
+  const meso::Counters& m = split.meso;
+  std::printf("  meso planned at %.1f %% of the steps (every %.1f s on average), %.3f plans per vehicle-step\n",
+              m.steps > 0 ? 100.0 * static_cast<double>(m.planning_steps) / static_cast<double>(m.steps) : 0.0,
+              m.planning_steps > 0 ? split.seconds_per_step * static_cast<double>(m.steps) /
+                                         static_cast<double>(m.planning_steps)
+                                   : 0.0,
+              split.vehicle_steps[kMesoCore] > 0
+                  ? static_cast<double>(m.plans) / static_cast<double>(split.vehicle_steps[kMesoCore])
+                  : 0.0);
   const CostLine micro_line = cost_line(micro_only, split, kMicroCore);
   const CostLine meso_line = cost_line(split, micro_only, kMesoCore);
   std::printf("  as fixed + marginal (through both configurations): micro %.2f us per step + %.3f us per vehicle, "

@@ -24,7 +24,7 @@ struct Case {
     eq = EquilibriumSpeed(v.driver.car_following);
   }
   const IdmParams& p() const { return v.driver.car_following.idm; }
-  MesoSpeed next(const Ahead& a) const { return next_speed(v, eq, a, p().desired_speed_mps, kDt); }
+  MesoSpeed next(const Ahead& a) const { return next_speed(v, eq, a, p().desired_speed_mps, PlanHorizon{kDt, 1}); }
   // The gap at which this driver's equilibrium speed is `speed_mps` (bisection on the table).
   double equilibrium_gap(double speed_mps) const {
     double lo = 0.0;
@@ -88,6 +88,41 @@ TEST(MesoModel, NeverIntoTheLeaderEvenIfItBrakesAtTheFrictionLimit) {
     EXPECT_TRUE(s.emergency) << gap;
   }
   EXPECT_EQ(c.next({0.2, 0.0}).speed_mps, 0.0);
+}
+
+// A plan over a whole update period (10 steps of 0.1 s), integrated as the core integrates it: its
+// steps never carry the vehicle beyond the floor gap behind a leader that brakes at the friction
+// limit from the first step, whether it slows on a ramp or has to stop short of it.
+TEST(MesoModel, APlanOverAPeriodNeverReachesALeaderThatBrakesAtTheFrictionLimit) {
+  const PlanHorizon period{kDt, 10};
+  const MesoModelParams m;
+  for (double speed : {5.0, 15.0, 30.0}) {
+    for (double leader : {0.0, 5.0, 20.0}) {
+      for (double gap : {1.0, 5.0, 15.0, 40.0}) {
+        Case c(speed, 33.0);
+        const MesoSpeed s = next_speed(c.v, c.eq, {gap, leader}, c.p().desired_speed_mps, period, m);
+        double v = speed;
+        double vl = leader;
+        double x = 0.0;
+        double xl = gap;
+        for (int i = 0; i < period.steps; ++i) {
+          v = std::max(0.0, v + s.accel_mps2 * kDt);
+          vl = std::max(0.0, vl - m.leader_brake_limit_mps2 * kDt);
+          x += v * kDt;
+          xl += vl * kDt;
+          EXPECT_LE(x, xl - m.floor_gap_m + 1e-9) << speed << " " << leader << " " << gap << " step " << i;
+        }
+      }
+    }
+  }
+}
+
+// Without a leader, a plan is a ramp towards the desired speed at no more than the driver's rate.
+TEST(MesoModel, APlanIsARampAtTheDriversRate) {
+  Case c(20.0, 33.0);
+  const MesoSpeed s = next_speed(c.v, c.eq, {}, c.p().desired_speed_mps, PlanHorizon{kDt, 10});
+  EXPECT_NEAR(s.accel_mps2, c.p().max_accel_mps2, 1e-9);
+  EXPECT_NEAR(s.speed_mps, 20.0 + c.p().max_accel_mps2 * 1.0, 1e-9);
 }
 
 TEST(MesoModel, AStandingObstacleIsBrakedForOnlyWhenComfortableBrakingNoLongerSuffices) {

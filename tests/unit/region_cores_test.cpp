@@ -204,6 +204,60 @@ TEST(MesoCore, NoVehicleEverPassesItsLeaderInALane) {
   for (const auto& v : core.fleet().vehicles()) EXPECT_NEAR(v.speed_mps, 15.0, 0.5) << v.id;
 }
 
+// Meso plans every vehicle once per update period (1 s, 10 steps) and in between moves it along
+// its ramp: the acceleration it publishes stays the same from one plan to the next.
+TEST(MesoCore, PlansEveryVehicleOncePerPeriodAndMovesItAlongItsRampInBetween) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.road.lanes_forward = 1;
+  meso::MesoCore core(sc, kMesoId);
+  const EgoObservation ego = ego_at(0, 3000.0, 0.0);
+  const WindowBounds w = WindowBounds::around(3000.0, sc.window);
+  StepOutput out = run_step(core, 1, ego, {birth(car(sc, 1, 0, w.inner_front_m + 300.0, 20.0, 33.0), Role::kMeso,
+                                                 Region::kOuterFront)},
+                            {});
+  std::vector<double> accel;
+  for (Step k = 2; k <= 40; ++k) {
+    out = run_step(core, k, ego, {}, as_world(out, kMesoId));
+    ASSERT_EQ(out.states.size(), 1U);
+    accel.push_back(out.states[0].accel_mps2);
+  }
+  EXPECT_EQ(core.counters().steps, 40U);
+  EXPECT_EQ(core.counters().planning_steps, 4U);  // steps 10, 20, 30 and 40
+  EXPECT_EQ(core.counters().plans, 4U);
+  // steps 10..19 one ramp, 20..29 the next: the same acceleration within each, a free road's
+  for (std::size_t i = 8; i < 18; ++i) EXPECT_DOUBLE_EQ(accel[i], accel[8]) << i;
+  EXPECT_GT(accel[8], 0.0);
+}
+
+// Two vehicles side by side in the outer lanes of three, both wanting the free middle lane at the
+// same plan: the first (in id order) takes it, the other stays.
+TEST(MesoCore, TwoVehiclesChoosingTheSameRoomAtOnceDoNotBothTakeIt) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.road.lanes_forward = 3;
+  meso::MesoCore core(sc, kMesoId);
+  const EgoObservation ego = ego_at(0, 3000.0, 0.0);
+  const WindowBounds w = WindowBounds::around(3000.0, sc.window);
+  const double s = w.inner_front_m + 300.0;
+  // A slow vehicle ahead in the right lane makes vehicle 1 want to pass to the left; vehicle 2 in
+  // the left lane, free ahead, wants to keep right. Both look at the middle lane beside them.
+  std::vector<Handoff> in{birth(car(sc, 1, 0, s, 30.0, 33.0), Role::kMeso, Region::kOuterFront),
+                          birth(car(sc, 2, 2, s, 30.0, 33.0), Role::kMeso, Region::kOuterFront),
+                          birth(car(sc, 3, 0, s + 30.0, 15.0, 15.0), Role::kMeso, Region::kOuterFront)};
+  StepOutput out = run_step(core, 9, ego, in, {});
+  out = run_step(core, 10, ego, {}, as_world(out, kMesoId));  // the plan
+  int into_middle = 0;
+  for (const Vehicle& v : core.fleet().vehicles()) {
+    if (v.lane_change.moving() && v.lane_change.to_lane == 1) ++into_middle;
+  }
+  EXPECT_EQ(into_middle, 1);
+  const Vehicle* first = nullptr;
+  for (const Vehicle& v : core.fleet().vehicles()) {
+    if (v.id == 1) first = &v;
+  }
+  ASSERT_NE(first, nullptr);
+  EXPECT_TRUE(first->lane_change.moving());
+}
+
 // A vehicle that has just begun to change lanes, and one placed in its target lane in that same
 // step, close ahead (a birth at the window's edge, decided without knowing of the change). Found
 // in a 30-minute drive: the changer braked at 39 m/s^2, its peers refused that sample, so the

@@ -1,6 +1,10 @@
 #include "meso/core/meso_core.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
+#include <cmath>
+#include <optional>
 
 #include "meso/core/meso_lanes.hpp"
 #include "traffic/actor_driving.hpp"
@@ -9,6 +13,18 @@
 #include "meso/core/meso_model.hpp"
 
 namespace entourage::meso {
+
+namespace {
+// Back to the lane it was leaving (it has hardly moved sideways); the interval before its next
+// change starts again.
+void call_off_lane_change(Vehicle& v) {
+  LaneChangeState& lc = v.lane_change;
+  lc.phase = LaneChangePhase::kNone;
+  lc.from_lane = lc.to_lane = v.lane;
+  lc.phase_elapsed_s = 0.0;
+  lc.since_last_change_s = 0.0;
+}
+}  // namespace
 
 std::vector<Region> regions_of_instance(std::uint8_t instance) {
   switch (instance) {
@@ -30,41 +46,59 @@ MesoCore::MesoCore(const ScenarioConfig& scenario, ServiceId self)
     : scenario_(scenario),
       self_(self),
       regions_(regions_of_instance(self.instance)),
+      serves_rear_(std::find(regions_.begin(), regions_.end(), Region::kOuterRear) != regions_.end()),
+      serves_front_(std::find(regions_.begin(), regions_.end(), Region::kOuterFront) != regions_.end()),
       inbox_(Role::kMeso, regions_),
       index_(scenario.road.lanes_forward, scenario.road.lanes_backward),
       model_(model_params_for(scenario)),
+      steps_per_plan_(std::max(1, static_cast<int>(std::lround(model_.update_period_s / scenario.step_s)))),
       env_(scenario) {}
 
-bool MesoCore::serves(Region r) const { return std::find(regions_.begin(), regions_.end(), r) != regions_.end(); }
+bool MesoCore::serves(Region r) const {
+  return (r == Region::kOuterRear && serves_rear_) || (r == Region::kOuterFront && serves_front_);
+}
 
 StepOutput MesoCore::step(const StepInput& in) {
+  ++counters_.steps;
   adopt(in);
-  perceive(in);
+  if (in.step % static_cast<Step>(steps_per_plan_) == 0) {
+    ++counters_.planning_steps;
+    perceive(in);
+    plan();
+  } else {
+    confirm_changes();
+  }
   move();
   return hand_off(in);
 }
 
 void MesoCore::adopt(const StepInput& in) {
-  counters_.adopted += adopt_handoffs(fleet_, inbox_, in.handoffs, in.step, scenario_.step_s);
+  newcomers_.clear();
+  counters_.adopted += adopt_handoffs(fleet_, inbox_, in.handoffs, in.step, scenario_.step_s, &newcomers_);
   counters_.commands_applied += apply_commands(fleet_, in.commands);
   counters_.duplicate_handoffs = inbox_.duplicates();
+}
+
+void MesoCore::confirm_changes() {
+  if (newcomers_.empty()) return;
+  std::vector<const Vehicle*> joined;
+  for (VehicleId id : newcomers_) {
+    if (const Vehicle* v = fleet_.find(id)) joined.push_back(v);
+  }
+  for (Vehicle& v : fleet_.vehicles()) {
+    const bool crowded = std::any_of(joined.begin(), joined.end(),
+                                     [&](const Vehicle* o) { return crowds_change(v, *o, lane_rules_); });
+    if (crowded) {
+      call_off_lane_change(v);
+      ++counters_.called_off_lane_changes;
+    }
+  }
 }
 
 void MesoCore::perceive(const StepInput& in) {
   build_index(index_, fleet_, in.world_prev, in.ego_prev ? &*in.ego_prev : nullptr);
 }
 
-namespace {
-// Back to the lane it was leaving (it has hardly moved sideways); the interval before its next
-// change starts again.
-void call_off_lane_change(Vehicle& v) {
-  LaneChangeState& lc = v.lane_change;
-  lc.phase = LaneChangePhase::kNone;
-  lc.from_lane = lc.to_lane = v.lane;
-  lc.phase_elapsed_s = 0.0;
-  lc.since_last_change_s = 0.0;
-}
-}  // namespace
 
 Ahead MesoCore::ahead_of(const Vehicle& v, bool own_lane_only) const {
   Ahead out;
@@ -91,91 +125,117 @@ const EquilibriumSpeed& MesoCore::equilibrium_of(const Vehicle& v) {
   return it->second;
 }
 
-void MesoCore::move() {
-  const double dt = scenario_.step_s;
-  // Every decision from the same snapshot first, then commit (gaps do not see this step's moves).
-  struct Next {
-    double speed_mps;
+void MesoCore::plan() {
+  const PlanHorizon horizon{scenario_.step_s, steps_per_plan_};
+  // Every plan from the same snapshot first, then commit (gaps do not see this step's plans).
+  struct Plan {
+    std::size_t index;
+    MesoSpeed speed;
     std::optional<int> lane;
     bool call_off;
   };
-  std::vector<Next> next;
-  next.reserve(fleet_.size());
-  for (const Vehicle& v : fleet_.vehicles()) {
+  std::vector<Plan> plans;
+  auto& vehicles = fleet_.vehicles();
+  plans.reserve(vehicles.size());
+  for (std::size_t i = 0; i < vehicles.size(); ++i) {
+    const Vehicle& v = vehicles[i];
     const bool call_off = calls_off_change(v, index_, lane_rules_);
     const Ahead ahead = ahead_of(v, call_off);
     const double desired = actor_desired_speed_mps(
         v, env_.speeds().desired_speed_mps(v.direction, v.s_m, v.driver.desired_speed_mps(), v.driver.basic_median_mps()));
-    const MesoSpeed ms = next_speed(v, equilibrium_of(v), ahead, desired, dt, model_);
+    const MesoSpeed ms = next_speed(v, equilibrium_of(v), ahead, desired, horizon, model_);
     if (ms.emergency) ++counters_.emergency_stops;
     const int must = mandatory_target_lane(v, env_);
     const bool may_change = must >= 0 || chooses_lanes_freely(v);  // actors only where the director asks
     const std::optional<int> lane = may_change ? choose_lane(v, index_, ahead.gap_m, lane_rules_, must) : std::nullopt;
     if (lane && must >= 0) ++counters_.mandatory_lane_changes;
-    next.push_back({ms.speed_mps, lane, call_off});
+    plans.push_back({i, ms, lane, call_off});
   }
-  auto& vehicles = fleet_.vehicles();
-  for (std::size_t i = 0; i < vehicles.size(); ++i) {
-    Vehicle& v = vehicles[i];
-    v.accel_mps2 = (next[i].speed_mps - v.speed_mps) / dt;
-    v.speed_mps = next[i].speed_mps;
-    v.s_m += sign(v.direction) * v.speed_mps * dt;
-    if (next[i].call_off) {
+  counters_.plans += plans.size();
+  std::vector<std::size_t> changing;  // vehicles that begin a change in this plan
+  for (const Plan& p : plans) {
+    Vehicle& v = vehicles[p.index];
+    v.accel_mps2 = p.speed.accel_mps2;
+    if (p.call_off) {
       call_off_lane_change(v);
       ++counters_.called_off_lane_changes;
     }
-    continue_lane_change(v, dt);
-    if (next[i].lane) v.lane_change = start_moving(v, *next[i].lane, v.driver.lane_change_duration_s);
+    if (!p.lane) continue;
+    const LaneChangeState before = v.lane_change;
+    v.lane_change = start_moving(v, *p.lane, v.driver.lane_change_duration_s);
+    // Two vehicles that chose the same room from the same snapshot (from the lanes on either
+    // side): the first in id order takes it.
+    if (std::any_of(changing.begin(), changing.end(),
+                    [&](std::size_t j) { return crowds_change(v, vehicles[j], lane_rules_); })) {
+      v.lane_change = before;
+      continue;
+    }
+    changing.push_back(p.index);
   }
+}
+
+void MesoCore::move() {
+  const double dt = scenario_.step_s;
+  for (Vehicle& v : fleet_.vehicles()) {
+    const double next = v.speed_mps + v.accel_mps2 * dt;
+    if (next <= 0.0) v.accel_mps2 = -v.speed_mps / dt;  // stops within this step, and stays (0 from the next)
+    v.speed_mps = std::max(0.0, next);
+    v.s_m += sign(v.direction) * v.speed_mps * dt;
+    continue_lane_change(v, dt);
+  }
+}
+
+MesoCore::Fate MesoCore::fate_of(const Vehicle& v, const WindowBounds& w) const {
+  const double margin = scenario_.window.handoff_hysteresis_m;
+  if (v.s_m > w.front_edge_m + margin) return v.direction == Direction::kForward ? Fate::kToFrontZone : Fate::kRetires;
+  if (v.s_m < w.rear_edge_m - margin) return Fate::kRetires;
+  const Region r = w.region_of(v.s_m);
+  if (r == Region::kInner) return Fate::kToMicro;
+  if (r != Region::kOutside && !serves(r)) return Fate::kToOtherMeso;
+  return Fate::kStays;
 }
 
 StepOutput MesoCore::hand_off(const StepInput& in) {
   const WindowBounds w = WindowBounds::around(in.ego.s_m, scenario_.window);
-  const double margin = scenario_.window.handoff_hysteresis_m;
   StepOutput out;
   out.states.reserve(fleet_.size());
-  // Vehicles of the ego's direction leaving ahead go on in the generator's front zone (they are the
-  // traffic ahead of the window); all others leaving the window retire.
-  auto ahead = fleet_.extract_if(
-      [&](const Vehicle& v) { return v.direction == Direction::kForward && v.s_m > w.front_edge_m + margin; });
-  for (const Vehicle& v : ahead) {
-    equilibrium_.erase(v.id);
-    out.states.push_back({v, Region::kOutside});
-    Handoff h = make_handoff(v, in.step, self_, Role::kGenerator, Region::kOutside, HandoffReason::kLeftWindow);
+  // One pass in id order, so both the states and the handoffs come out in id order. Vehicles of the
+  // ego's direction leaving ahead go on in the generator's front zone (they are the traffic ahead of
+  // the window; published once more, outside); others leaving the window retire (not published).
+  bool someone_leaves = false;
+  for (const Vehicle& v : fleet_.vehicles()) {
+    const Fate fate = fate_of(v, w);
+    const Region r = fate == Fate::kToFrontZone ? Region::kOutside : w.region_of(v.s_m);
+    if (fate != Fate::kRetires) out.states.emplace_back(v, r);
+    if (fate == Fate::kStays) continue;
+    someone_leaves = true;
+    Handoff h;
+    switch (fate) {
+      case Fate::kToFrontZone:
+        h = make_handoff(v, in.step, self_, Role::kGenerator, Region::kOutside, HandoffReason::kLeftWindow);
+        ++counters_.to_front_zone;
+        break;
+      case Fate::kRetires:
+        h = make_handoff(v, in.step, self_, Role::kNone, Region::kOutside, HandoffReason::kLeftWindow);
+        ++counters_.retired;
+        break;
+      case Fate::kToMicro:
+        h = make_handoff(v, in.step, self_, Role::kMicro, r, HandoffReason::kBorder);
+        ++counters_.to_micro;
+        break;
+      default:
+        h = make_handoff(v, in.step, self_, Role::kMeso, r, HandoffReason::kBorder);
+        ++counters_.to_other_meso;
+        break;
+    }
     inbox_.note_sent(h);
     out.handoffs.push_back(std::move(h));
-    ++counters_.to_front_zone;
   }
-  auto retiring = fleet_.extract_if(
-      [&](const Vehicle& v) { return v.s_m < w.rear_edge_m - margin || v.s_m > w.front_edge_m + margin; });
-  for (const Vehicle& v : retiring) {
-    equilibrium_.erase(v.id);
-    Handoff h = make_handoff(v, in.step, self_, Role::kNone, Region::kOutside, HandoffReason::kLeftWindow);
-    inbox_.note_sent(h);
-    out.handoffs.push_back(std::move(h));
-    ++counters_.retired;
+  if (someone_leaves) {
+    for (const Vehicle& v : fleet_.extract_if([&](const Vehicle& v) { return fate_of(v, w) != Fate::kStays; })) {
+      equilibrium_.erase(v.id);
+    }
   }
-  for (const Vehicle& v : fleet_.vehicles()) out.states.push_back({v, w.region_of(v.s_m)});
-  // Both runs (those leaving ahead, then the rest of the fleet) are in id order already: merged,
-  // not sorted (a sort moved these large records around at every step).
-  const auto by_id = [](const VehicleReport& a, const VehicleReport& b) { return a.id < b.id; };
-  std::inplace_merge(out.states.begin(), out.states.begin() + static_cast<std::ptrdiff_t>(ahead.size()),
-                     out.states.end(), by_id);
-  auto leaving = fleet_.extract_if([&](const Vehicle& v) {
-    const Region r = w.region_of(v.s_m);
-    return r == Region::kInner || (r != Region::kOutside && !serves(r));
-  });
-  for (const Vehicle& v : leaving) {
-    equilibrium_.erase(v.id);
-    const Region r = w.region_of(v.s_m);
-    const Role to = r == Region::kInner ? Role::kMicro : Role::kMeso;
-    Handoff h = make_handoff(v, in.step, self_, to, r, HandoffReason::kBorder);
-    inbox_.note_sent(h);
-    out.handoffs.push_back(std::move(h));
-    ++(to == Role::kMicro ? counters_.to_micro : counters_.to_other_meso);
-  }
-  std::sort(out.handoffs.begin(), out.handoffs.end(),
-            [](const Handoff& a, const Handoff& b) { return a.vehicle.id < b.vehicle.id; });
   return out;
 }
 

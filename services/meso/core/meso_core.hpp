@@ -4,10 +4,15 @@
 // only the front or the rear one. Phases of a step:
 //   adopt     handoffs addressed to this meso instance join the fleet; director commands reach
 //             their actors
-//   perceive  the lane index from the fleet, the rest of the world at step-1 and the ego
-//   move      every vehicle's next speed from its gap and its desired speed at its place
-//             (meso_model.hpp) and lane choice (meso_lanes.hpp) from the same snapshot, then
-//             integrate
+//   perceive  the lane index from the fleet, the rest of the world at step-1 and the ego (only
+//             at a step that plans)
+//   plan      every vehicle once per update period (`update_period_s`), all from the same
+//             snapshot, then committed: its speed ramp over the next period from its gap and its
+//             desired speed at its place (meso_model.hpp), and its lane choice (meso_lanes.hpp).
+//             Between plans a vehicle keeps its ramp (one that just joined, the acceleration it
+//             came with) and only a lane change just begun is checked, against the vehicles that
+//             just joined
+//   move      every vehicle along its ramp and its lane change, one step
 //   hand off  vehicles in the inner region go to micro, vehicles in a region this instance does
 //             not serve go to the meso that does, vehicles of the ego's direction beyond the front
 //             edge go on in the generator's front zone, other vehicles beyond the edges retire
@@ -36,9 +41,12 @@ struct Counters {
   std::uint64_t to_front_zone = 0;  // left ahead in the ego's direction: on to the generator
   std::uint64_t duplicate_handoffs = 0;
   std::uint64_t commands_applied = 0;  // director commands to vehicles owned here
-  std::uint64_t emergency_stops = 0;  // vehicle-steps where the floor-gap guard overrode braking
+  std::uint64_t emergency_stops = 0;  // plans where the floor-gap guard overrode braking
   std::uint64_t mandatory_lane_changes = 0;
   std::uint64_t called_off_lane_changes = 0;  // changes just begun whose target lane filled up (meso_lanes.hpp)
+  std::uint64_t steps = 0;
+  std::uint64_t planning_steps = 0;  // steps that built the lane index and planned every vehicle
+  std::uint64_t plans = 0;           // vehicle plans (speed ramp and lane choice) made
 };
 
 // The outer regions served by a meso instance (kMesoBoth, kMesoFront or kMesoRear).
@@ -58,9 +66,17 @@ class MesoCore {
   const Counters& counters() const { return counters_; }
 
  private:
+  // What becomes of a vehicle at the end of a step.
+  enum class Fate : std::uint8_t { kStays, kToFrontZone, kRetires, kToMicro, kToOtherMeso };
+
   void adopt(const StepInput& in);
+  // Between two plans: a lane change just begun is called off when a vehicle that has just joined
+  // took its room (meso_lanes.hpp, crowds_change).
+  void confirm_changes();
   void perceive(const StepInput& in);
+  void plan();
   void move();
+  Fate fate_of(const Vehicle& v, const WindowBounds& w) const;
   // The nearer leader of the lanes it occupies (of its own lane only if `own_lane_only`: a change
   // called off), an oncoming vehicle in its lane, or the start of a closure of its lane.
   Ahead ahead_of(const Vehicle& v, bool own_lane_only) const;
@@ -71,11 +87,15 @@ class MesoCore {
   ScenarioConfig scenario_;
   ServiceId self_;
   std::vector<Region> regions_;
+  bool serves_rear_;   // regions_ as looked up at every step
+  bool serves_front_;
   HandoffInbox inbox_;
   Fleet fleet_;
   LaneIndex index_;
   LaneRules lane_rules_;
   MesoModelParams model_;
+  int steps_per_plan_ = 1;              // the update period in steps
+  std::vector<VehicleId> newcomers_;    // joined at this step
   DrivingEnvironment env_;
   std::unordered_map<VehicleId, EquilibriumSpeed> equilibrium_;  // per owned vehicle's driver
   Counters counters_;

@@ -6,22 +6,30 @@ namespace {
 
 double safe_gap_m(const IdmParams& p, double speed_mps) { return p.min_gap_m + speed_mps * p.time_gap_s; }
 
+// Room for `v` behind `leader`: at least `ahead_factor` safe gaps.
+bool room_behind(const Vehicle& v, const Occupant& leader, double ahead_factor) {
+  return gap_between(leader, v.progress_m(), v.length_m) >= ahead_factor * safe_gap_m(v.driver.car_following.idm, v.speed_mps);
+}
+
+// Room for `follower` behind `v`: the follower keeps its safe gap (at its speed, `v`'s time gap).
+bool room_ahead_of(const Vehicle& v, const Occupant& follower) {
+  const Occupant self{v.id, v.progress_m(), v.speed_mps, 0.0, v.length_m};
+  return gap_between(self, follower.progress_m, follower.length_m) >=
+         safe_gap_m(v.driver.car_following.idm, follower.speed_mps);
+}
+
 // Room for `v` in `lane`: the gap ahead is at least `ahead_factor` safe gaps and the follower
 // there keeps its own safe gap. Returns the leader there (or nullptr) through `leader_out`.
 bool has_room(const Vehicle& v, const LaneIndex& index, int lane, double ahead_factor, const Occupant** leader_out) {
-  const IdmParams& p = v.driver.car_following.idm;
   const auto around = index.neighbours(v.direction, lane, v.progress_m(), v.id);
-  const Occupant* leader = around.leader;
-  const Occupant* follower = around.follower;
-  *leader_out = leader;
-  if (leader != nullptr && gap_between(*leader, v.progress_m(), v.length_m) < ahead_factor * safe_gap_m(p, v.speed_mps)) {
-    return false;
-  }
-  if (follower != nullptr) {
-    const Occupant self{v.id, v.progress_m(), v.speed_mps, 0.0, v.length_m};
-    if (gap_between(self, follower->progress_m, follower->length_m) < safe_gap_m(p, follower->speed_mps)) return false;
-  }
-  return true;
+  *leader_out = around.leader;
+  if (around.leader != nullptr && !room_behind(v, *around.leader, ahead_factor)) return false;
+  return around.follower == nullptr || room_ahead_of(v, *around.follower);
+}
+
+bool just_begun(const Vehicle& v, const LaneRules& rules) {
+  const LaneChangeState& lc = v.lane_change;
+  return lc.moving() && lc.lateral_fraction() <= rules.call_off_fraction;
 }
 
 }  // namespace
@@ -57,11 +65,19 @@ std::optional<int> choose_lane(const Vehicle& v, const LaneIndex& index, double 
 
 bool calls_off_change(const Vehicle& v, const LaneIndex& index, const LaneRules& rules) {
   const LaneChangeState& lc = v.lane_change;
-  if (!lc.moving() || lc.lateral_fraction() > rules.call_off_fraction) return false;
+  if (!just_begun(v, rules)) return false;
   const int lanes = index.lanes(v.direction);
   if (lc.to_lane < 0 || lc.to_lane >= lanes || v.lane >= lanes) return false;  // an overtaking: micro's manoeuvre
   const Occupant* leader_there = nullptr;
   return !has_room(v, index, lc.to_lane, 1.0, &leader_there);
+}
+
+bool crowds_change(const Vehicle& v, const Vehicle& other, const LaneRules& rules) {
+  if (other.id == v.id || other.direction != v.direction || !just_begun(v, rules)) return false;
+  const int to = v.lane_change.to_lane;
+  if (other.lane != to && other.target_lane() != to) return false;
+  const Occupant o{other.id, other.progress_m(), other.speed_mps, other.accel_mps2, other.length_m};
+  return other.progress_m() >= v.progress_m() ? !room_behind(v, o, 1.0) : !room_ahead_of(v, o);
 }
 
 }  // namespace entourage::meso

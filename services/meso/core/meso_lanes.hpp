@@ -14,7 +14,8 @@
 //
 //   call off a change just begun whose target lane has no room any more: the vehicle decided on
 //            the world of the step before, and in that same step another service placed a vehicle
-//            there (a birth at the window's edge) or another vehicle changed into it. Only while
+//            there (a birth at the window's edge) or another vehicle changed into it (between two
+//            plans, only a vehicle that has just joined is checked: crowds_change). Only while
 //            it has moved less than `call_off_fraction` of a lane sideways, so that going back is
 //            invisible; beyond that it completes the change (micro's drivers signal first and
 //            check again before moving, which closes the same race)
@@ -44,5 +45,11 @@ std::optional<int> choose_lane(const Vehicle& v, const LaneIndex& index, double 
 
 // Whether `v` calls off the lane change it has just begun (see "call off" above).
 bool calls_off_change(const Vehicle& v, const LaneIndex& index, const LaneRules& rules);
+
+// The same against one vehicle, without an index: whether `other`, in the lane `v`'s change has
+// just begun towards (or moving into it), leaves `v` no room there. For the steps between two
+// plans, when the vehicles that just joined (births at the window's edges, handoffs) are the only
+// ones that can have taken that room (the others are seen at the plan).
+bool crowds_change(const Vehicle& v, const Vehicle& other, const LaneRules& rules);
 
 }  // namespace entourage::meso

@@ -2,25 +2,32 @@
 // The mesoscopic vehicle update of the outer regions. A vehicle's speed relaxes towards the speed
 // its own car-following model has in equilibrium at its gap (equilibrium.hpp: the model's
 // fundamental diagram, a speed-density relation per lane), so meso vehicles settle at the speeds
-// micro vehicles would have at the same gaps; a kinematic bound keeps it safe:
+// micro vehicles would have at the same gaps; a kinematic bound keeps it safe. A vehicle is
+// planned once per update period T = k dt (k steps, `update_period_s`), not at every step: the
+// plan is the speed v_next it reaches after T, on a straight ramp (constant acceleration) that the
+// core integrates step by step until the next plan:
 //
-//   v_eq    = min(V_e(gap), v0_local)                 (v0_local: speed adaptation, limits ahead)
-//   v_relax = v + clamp((v_eq - v) dt / tau, -b dt, a dt)
+//   v_eq    = min(V_e(gap + T (v_leader - v)), v0_local)   (the gap expected after T; v0_local:
+//                                                     speed adaptation, limits ahead)
+//   v_relax = v + clamp((v_eq - v) T / tau, -b T, a T)
 //   v_safe  = v_leader + sqrt(2 b (gap - s0))         (can still brake comfortably to the leader)
 //   v_next  = v_relax                    if v_relax <= v_safe
-//           = max(v_safe, v - b_max dt)  otherwise (brakes harder, up to the vehicle's limit)
-//   v_next  = min(v_next, (gap - s_floor) / dt + v_leader_low)   never into the leader (emergency)
-//   s_next  = s + v_next dt                           (along the direction of travel)
+//           = max(v_safe, v - b_max T)   otherwise (brakes harder, up to the vehicle's limit)
+//   a       = min((v_next - v) / T, a_guard)         a_guard: the highest rate whose steps stay
+//                                                     s_floor behind the leader at every step of
+//                                                     the period, the leader braking at the
+//                                                     friction limit: never into it (emergency)
+//   each step: v = max(0, v + a dt),  s += v dt       (along the direction of travel)
 //
-// with the driver's a, b, s0, the vehicle's braking limit b_max, the relaxation time tau, and
-// v_leader_low the slowest the leader can drive in this step (braking at the friction limit).
-// A vehicle off its equilibrium (after a handoff, behind a vehicle that just entered or changed
-// lanes) returns to it at comfortable rates instead of jumping to V_e(gap); only a leader too
-// close to brake for comfortably makes it brake harder. The order within a lane is kept: a
+// with the driver's a, b, s0, the vehicle's braking limit b_max and the relaxation time tau. A
+// vehicle off its equilibrium (after a handoff, behind a vehicle that just entered or
+// changed lanes) returns to it at comfortable rates instead of jumping to V_e(gap); only a leader
+// too close to brake for comfortably makes it brake harder. The order within a lane is kept: a
 // vehicle never reaches its leader. Lane choice: meso_lanes.hpp.
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "meso/core/equilibrium.hpp"
 #include "traffic/vehicle.hpp"
@@ -31,6 +38,16 @@ struct MesoModelParams {
   double relaxation_time_s = 1.0;  // tau: how fast speed returns to equilibrium (bounded by a and b)
   double floor_gap_m = 0.5;        // closest a meso vehicle comes to its leader, bumper to bumper
   double leader_brake_limit_mps2 = 10.0;  // the hardest any leader can brake (about 1 g)
+  // T: how often a vehicle is planned (rounded to whole steps). Once per second, a driver's
+  // reaction time, is what makes meso cheap: services/meso/README.md, *Cost*.
+  double update_period_s = 1.0;
+};
+
+// How far a plan reaches: `steps` steps of `dt_s` each.
+struct PlanHorizon {
+  double dt_s = 0.1;
+  int steps = 1;
+  double length_s() const { return dt_s * steps; }
 };
 
 struct Ahead {
@@ -39,31 +56,56 @@ struct Ahead {
 };
 
 struct MesoSpeed {
-  double speed_mps = 0.0;
-  bool emergency = false;  // the floor-gap guard overrode the braking limit
+  double speed_mps = 0.0;   // at the end of the horizon
+  double accel_mps2 = 0.0;  // the ramp's constant rate (the speed stays at 0 once it gets there)
+  bool emergency = false;   // the floor-gap guard overrode the braking limit
 };
+
+// The highest constant acceleration from `speed_mps` whose steps keep `floor_m` behind a leader
+// `gap_m` ahead at `leader_speed_mps` that brakes at `leader_brake_mps2` from the first step, at
+// every step of the horizon (each step moves a vehicle at its speed after that step's change;
+// a speed that would fall below 0 stays at 0, which only travels less).
+inline double guard_accel_mps2(double speed_mps, double gap_m, double leader_speed_mps, double leader_brake_mps2,
+                               double floor_m, const PlanHorizon& h) {
+  double bound = std::numeric_limits<double>::infinity();
+  double leader_mps = leader_speed_mps;
+  double leader_travel_m = 0.0;
+  for (int i = 1; i <= h.steps; ++i) {
+    leader_mps = std::max(0.0, leader_mps - leader_brake_mps2 * h.dt_s);
+    leader_travel_m += leader_mps * h.dt_s;
+    // steps 1..i travel i dt v + a dt^2 i (i + 1) / 2
+    const double room_m = gap_m - floor_m + leader_travel_m - i * h.dt_s * speed_mps;
+    bound = std::min(bound, room_m / (h.dt_s * h.dt_s * i * (i + 1) / 2.0));
+  }
+  return bound;
+}
 
 // `desired_speed_mps`: the driver's desired speed at its place (speed adaptation, look-ahead).
 inline MesoSpeed next_speed(const Vehicle& v, const EquilibriumSpeed& eq, const Ahead& ahead, double desired_speed_mps,
-                            double dt_s, const MesoModelParams& m = {}) {
+                            const PlanHorizon& h, const MesoModelParams& m = {}) {
   const IdmParams& p = v.driver.car_following.idm;
+  const double t = h.length_s();
   const bool led = ahead.gap_m >= 0.0;
-  const double target = led ? std::min(desired_speed_mps, eq.at(ahead.gap_m)) : desired_speed_mps;
-  const double change = std::clamp((target - v.speed_mps) * dt_s / m.relaxation_time_s,
-                                   -p.comfort_decel_mps2 * dt_s, p.max_accel_mps2 * dt_s);
+  // The equilibrium at the gap expected at the end of the period: without that anticipation a
+  // platoon planned once a second oscillates (each driver answers the gap its leader left a
+  // period ago).
+  const double expected_gap_m = std::max(0.0, ahead.gap_m + t * (ahead.leader_speed_mps - v.speed_mps));
+  const double target = led ? std::min(desired_speed_mps, eq.at(expected_gap_m)) : desired_speed_mps;
+  const double change = std::clamp((target - v.speed_mps) * t / m.relaxation_time_s, -p.comfort_decel_mps2 * t,
+                                   p.max_accel_mps2 * t);
   double next = v.speed_mps + change;
   if (led) {
     const double room = std::max(0.0, ahead.gap_m - p.min_gap_m);
     const double safe = ahead.leader_speed_mps + std::sqrt(2.0 * p.comfort_decel_mps2 * room);
-    if (next > safe) next = std::max(safe, v.speed_mps - v.driver.max_decel_mps2 * dt_s);
+    if (next > safe) next = std::max(safe, v.speed_mps - v.driver.max_decel_mps2 * t);
   }
-  MesoSpeed out{std::max(0.0, next), false};
-  if (led) {
-    const double leader_low = std::max(0.0, ahead.leader_speed_mps - m.leader_brake_limit_mps2 * dt_s);
-    const double guard = std::max(0.0, (ahead.gap_m - m.floor_gap_m) / dt_s + leader_low);
-    if (guard < out.speed_mps) out = {guard, true};
-  }
-  return out;
+  next = std::max(0.0, next);
+  const MesoSpeed out{next, (next - v.speed_mps) / t, false};
+  if (!led) return out;
+  const double guard = guard_accel_mps2(v.speed_mps, ahead.gap_m, ahead.leader_speed_mps, m.leader_brake_limit_mps2,
+                                        m.floor_gap_m, h);
+  if (guard >= out.accel_mps2) return out;
+  return {std::max(0.0, v.speed_mps + guard * t), guard, true};
 }
 
 }  // namespace entourage::meso
