@@ -6,7 +6,8 @@
 //             their actors
 //   perceive  the lane index from the fleet, the rest of the world at step-1 and the ego (only
 //             at a step that plans)
-//   plan      every vehicle once per update period (`update_period_s`), all from the same
+//   plan      every vehicle once per update period (`update_period_s`; every step in a scenario
+//             with plays: model_params_for), all from the same
 //             snapshot, then committed: its speed ramp over the next period from its gap and its
 //             desired speed at its place (meso_model.hpp), and its lane choice (meso_lanes.hpp).
 //             Between plans a vehicle keeps its ramp (one that just joined, the acceleration it
@@ -53,7 +54,8 @@ struct Counters {
 std::vector<Region> regions_of_instance(std::uint8_t instance);
 
 // The meso model's parameters for a scenario: leaders brake at most as hard as the hardest-braking
-// vehicle type, and never harder than the friction limit's default.
+// vehicle type, and never harder than the friction limit's default; a scenario with plays is
+// planned at every step.
 MesoModelParams model_params_for(const ScenarioConfig& scenario);
 
 class MesoCore {
