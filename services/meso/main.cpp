@@ -21,11 +21,11 @@ int meso_main(int argc, char** argv) {
         const meso::Counters& c = core.counters();
         spdlog::info("vehicles adopted {}; handed to micro {}, to the other meso {}, to the front zone {}; retired {}; "
                      "planned at {} of {} steps, {} vehicle plans, {} of them floor-gap emergencies; "
-                     "mandatory lane changes {}, changes called off {}; director commands applied {}; "
-                     "duplicate handoffs {}",
+                     "mandatory lane changes {}, changes called off {}; overtakings started {}; "
+                     "director commands applied {}; duplicate handoffs {}",
                      c.adopted, c.to_micro, c.to_other_meso, c.to_front_zone, c.retired, c.planning_steps, c.steps,
                      c.plans, c.emergency_stops, c.mandatory_lane_changes, c.called_off_lane_changes,
-                     c.commands_applied, c.duplicate_handoffs);
+                     c.overtakings_started, c.commands_applied, c.duplicate_handoffs);
         return rc;
       },
       [&regions](ServiceId* id) -> std::optional<std::string> {

@@ -50,7 +50,7 @@ TEST_P(PlaySucceeds, IsHandedOverWithinToleranceAndRunsToItsEnd) {
 INSTANTIATE_TEST_SUITE_P(Shipped, PlaySucceeds,
                          ::testing::Values(Case{"freeway_lead_brakes", 2}, Case{"freeway_lead_brakes", 4},
                                            Case{"freeway_cut_in", 7}, Case{"freeway_stopped_vehicle", 5},
-                                           Case{"rural_slow_truck", 8}),  // 9 until stop 19, 4 until stop 17 (overtaking changes)
+                                           Case{"rural_slow_truck", 23}),  // 8 until stop 21 (meso overtakes), 9 until stop 19, 4 until stop 17
                          [](const ::testing::TestParamInfo<Case>& p) {
                            return p.param.scenario + "_seed" + std::to_string(p.param.seed);
                          });

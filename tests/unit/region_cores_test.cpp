@@ -258,6 +258,38 @@ TEST(MesoCore, TwoVehiclesChoosingTheSameRoomAtOnceDoNotBothTakeIt) {
   EXPECT_TRUE(first->lane_change.moving());
 }
 
+// On a two-lane rural road a car that overtakes, held up behind a slow truck in the front outer
+// region with the oncoming lane empty, passes it there (driven by micro's model from the start
+// of the pass until it is back in its lane) and stays meso's while it passes.
+TEST(MesoCore, ACarPassesASlowTruckInTheOuterRegionOfARuralRoad) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.road.kind = RoadKind::kRural;
+  sc.road.lanes_forward = 1;
+  sc.road.lanes_backward = 1;
+  sc.window.outer_ahead_m = 3000.0;
+  meso::MesoCore core(sc, kMesoId);
+  const EgoObservation ego = ego_at(0, 3000.0, 0.0);
+  const WindowBounds w = WindowBounds::around(3000.0, sc.window);
+  Vehicle fast = car(sc, 1, 0, w.inner_front_m + 60.0, 22.0, 25.0);
+  fast.driver.lane_change = LaneChangeModel::kOvertaking;
+  Vehicle slow = car(sc, 2, 0, w.inner_front_m + 100.0, 16.0, 16.0);
+  slow.driver.lane_change = LaneChangeModel::kNone;
+  StepOutput out = run_step(core, 1, ego, {birth(fast, Role::kMeso, Region::kOuterFront), birth(slow, Role::kMeso, Region::kOuterFront)}, {});
+  bool used_oncoming_lane = false;
+  for (Step k = 2; k < 400; ++k) {
+    out = run_step(core, k, ego, {}, as_world(out, kMesoId));
+    ASSERT_EQ(core.fleet().size(), 2U) << "step " << k;  // neither left (the window is long enough)
+    for (const VehicleReport& r : out.states) used_oncoming_lane |= r.id == 1 && r.target_lane == 1;
+  }
+  const Vehicle& a = core.fleet().vehicles()[0];
+  const Vehicle& b = core.fleet().vehicles()[1];
+  EXPECT_TRUE(used_oncoming_lane);
+  EXPECT_EQ(core.counters().overtakings_started, 1U);
+  EXPECT_EQ(a.lane, 0);
+  EXPECT_FALSE(a.overtaking.active());
+  EXPECT_GT(a.s_m, b.s_m + 10.0);
+}
+
 // A vehicle that has just begun to change lanes, and one placed in its target lane in that same
 // step, close ahead (a birth at the window's edge, decided without knowing of the change). Found
 // in a 30-minute drive: the changer braked at 39 m/s^2, its peers refused that sample, so the

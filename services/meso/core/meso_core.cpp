@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <cmath>
-#include <optional>
 
 #include "meso/core/meso_lanes.hpp"
 #include "traffic/actor_driving.hpp"
 #include "traffic/driving.hpp"
 #include "traffic/lane_changes.hpp"
+#include "traffic/overtaking_manoeuvre.hpp"
 #include "meso/core/meso_model.hpp"
 
 namespace entourage::meso {
@@ -64,15 +63,56 @@ bool MesoCore::serves(Region r) const {
 StepOutput MesoCore::step(const StepInput& in) {
   ++counters_.steps;
   adopt(in);
-  if (in.step % static_cast<Step>(steps_per_plan_) == 0) {
+  overtakers_.clear();
+  const bool planning = in.step % static_cast<Step>(steps_per_plan_) == 0;
+  const bool someone_overtakes = std::any_of(fleet_.vehicles().begin(), fleet_.vehicles().end(),
+                                             [&](const Vehicle& v) { return overtaking(v); });
+  if (planning || someone_overtakes) perceive(in);
+  if (planning) {
     ++counters_.planning_steps;
-    perceive(in);
     plan();
   } else {
     confirm_changes();
   }
+  drive_overtakers();
   move();
   return hand_off(in);
+}
+
+bool MesoCore::overtaking(const Vehicle& v) const {
+  const int lanes = env_.lanes(v.direction);
+  return v.overtaking.active() || v.lane >= lanes || v.target_lane() >= lanes;
+}
+
+bool MesoCore::starts_overtaking(Vehicle& v, double desired_speed_mps) {
+  if (!overtakes(v, env_) || !chooses_lanes_freely(v) || overtaking(v)) return false;
+  // The driver asks itself every decision interval of simulated time; a plan comes once a period.
+  const double elapsed_between_plans_s = (steps_per_plan_ - 1) * scenario_.step_s;
+  v.overtaking.next_decision_s = std::max(0.0, v.overtaking.next_decision_s - elapsed_between_plans_s);
+  const OvertakingStep ot = overtaking_step(v, index_, env_, desired_speed_mps);
+  if (ot.started) return true;  // micro's decision, which draws the same, starts it (drive_overtakers)
+  v.overtaking = ot.state;
+  v.driver.rng_state = ot.rng_state;
+  return false;
+}
+
+void MesoCore::drive_overtakers() {
+  auto& vehicles = fleet_.vehicles();
+  for (std::size_t i = 0; i < vehicles.size(); ++i) {
+    if (overtaking(vehicles[i])) overtakers_.push_back(i);
+  }
+  std::sort(overtakers_.begin(), overtakers_.end());
+  overtakers_.erase(std::unique(overtakers_.begin(), overtakers_.end()), overtakers_.end());
+  // Every decision from the same snapshot first, then commit, as micro does.
+  std::vector<Decision> decisions;
+  decisions.reserve(overtakers_.size());
+  for (std::size_t i : overtakers_) decisions.push_back(decide(vehicles[i], index_, env_));
+  for (std::size_t k = 0; k < overtakers_.size(); ++k) {
+    Vehicle& v = vehicles[overtakers_[k]];
+    const bool was_passing = v.overtaking.active();
+    commit(v, decisions[k], scenario_.step_s);
+    if (!was_passing && v.overtaking.active()) ++counters_.overtakings_started;
+  }
 }
 
 void MesoCore::adopt(const StepInput& in) {
@@ -89,6 +129,7 @@ void MesoCore::confirm_changes() {
     if (const Vehicle* v = fleet_.find(id)) joined.push_back(v);
   }
   for (Vehicle& v : fleet_.vehicles()) {
+    if (overtaking(v)) continue;  // micro's manoeuvre reviews its own moves
     const bool crowded = std::any_of(joined.begin(), joined.end(),
                                      [&](const Vehicle* o) { return crowds_change(v, *o, lane_rules_); });
     if (crowded) {
@@ -141,11 +182,16 @@ void MesoCore::plan() {
   auto& vehicles = fleet_.vehicles();
   plans.reserve(vehicles.size());
   for (std::size_t i = 0; i < vehicles.size(); ++i) {
-    const Vehicle& v = vehicles[i];
-    const bool call_off = calls_off_change(v, index_, lane_rules_);
-    const Ahead ahead = ahead_of(v, call_off);
+    Vehicle& v = vehicles[i];
+    if (overtaking(v)) continue;  // driven by micro's model (drive_overtakers)
     const double desired = actor_desired_speed_mps(
         v, env_.speeds().desired_speed_mps(v.direction, v.s_m, v.driver.desired_speed_mps(), v.driver.basic_median_mps()));
+    if (starts_overtaking(v, desired)) {
+      overtakers_.push_back(i);
+      continue;
+    }
+    const bool call_off = calls_off_change(v, index_, lane_rules_);
+    const Ahead ahead = ahead_of(v, call_off);
     const MesoSpeed ms = next_speed(v, equilibrium_of(v), ahead, desired, horizon, model_);
     if (ms.emergency) ++counters_.emergency_stops;
     const int must = mandatory_target_lane(v, env_);
@@ -179,7 +225,14 @@ void MesoCore::plan() {
 
 void MesoCore::move() {
   const double dt = scenario_.step_s;
-  for (Vehicle& v : fleet_.vehicles()) {
+  auto& vehicles = fleet_.vehicles();
+  auto driven = overtakers_.begin();  // in index order: moved by their own commit
+  for (std::size_t i = 0; i < vehicles.size(); ++i) {
+    if (driven != overtakers_.end() && *driven == i) {
+      ++driven;
+      continue;
+    }
+    Vehicle& v = vehicles[i];
     const double next = v.speed_mps + v.accel_mps2 * dt;
     if (next <= 0.0) v.accel_mps2 = -v.speed_mps / dt;  // stops within this step, and stays (0 from the next)
     v.speed_mps = std::max(0.0, next);
@@ -190,8 +243,12 @@ void MesoCore::move() {
 
 MesoCore::Fate MesoCore::fate_of(const Vehicle& v, const WindowBounds& w) const {
   const double margin = scenario_.window.handoff_hysteresis_m;
-  if (v.s_m > w.front_edge_m + margin) return v.direction == Direction::kForward ? Fate::kToFrontZone : Fate::kRetires;
-  if (v.s_m < w.rear_edge_m - margin) return Fate::kRetires;
+  const bool out_ahead = v.s_m > w.front_edge_m + margin;
+  if ((out_ahead && v.direction == Direction::kBackward) || v.s_m < w.rear_edge_m - margin) return Fate::kRetires;
+  // An overtaker finishes its pass here first: a handoff does not carry the manoeuvre (micro
+  // holds its own overtakers back the same way).
+  if (overtaking(v)) return Fate::kStays;
+  if (out_ahead) return Fate::kToFrontZone;
   const Region r = w.region_of(v.s_m);
   if (r == Region::kInner) return Fate::kToMicro;
   if (r != Region::kOutside && !serves(r)) return Fate::kToOtherMeso;

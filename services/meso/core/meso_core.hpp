@@ -48,6 +48,7 @@ struct Counters {
   std::uint64_t steps = 0;
   std::uint64_t planning_steps = 0;  // steps that built the lane index and planned every vehicle
   std::uint64_t plans = 0;           // vehicle plans (speed ramp and lane choice) made
+  std::uint64_t overtakings_started = 0;  // passes in the oncoming lane begun in the outer regions
 };
 
 // The outer regions served by a meso instance (kMesoBoth, kMesoFront or kMesoRear).
@@ -77,6 +78,12 @@ class MesoCore {
   void confirm_changes();
   void perceive(const StepInput& in);
   void plan();
+  // Overtaking in the oncoming lane of a two-lane road: a driver that overtakes asks at each plan
+  // whether to start (as micro's drivers do once a decision interval); from the start until it is
+  // back in its lane it is driven by micro's driver model at every step.
+  bool overtaking(const Vehicle& v) const;
+  bool starts_overtaking(Vehicle& v, double desired_speed_mps);
+  void drive_overtakers();
   void move();
   Fate fate_of(const Vehicle& v, const WindowBounds& w) const;
   // The nearer leader of the lanes it occupies (of its own lane only if `own_lane_only`: a change
@@ -98,6 +105,7 @@ class MesoCore {
   MesoModelParams model_;
   int steps_per_plan_ = 1;              // the update period in steps
   std::vector<VehicleId> newcomers_;    // joined at this step
+  std::vector<std::size_t> overtakers_;  // fleet positions driven by micro's model at this step, ascending
   DrivingEnvironment env_;
   std::unordered_map<VehicleId, EquilibriumSpeed> equilibrium_;  // per owned vehicle's driver
   Counters counters_;
