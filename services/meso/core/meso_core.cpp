@@ -67,6 +67,7 @@ StepOutput MesoCore::step(const StepInput& in) {
   const bool planning = in.step % static_cast<Step>(steps_per_plan_) == 0;
   const bool someone_overtakes = std::any_of(fleet_.vehicles().begin(), fleet_.vehicles().end(),
                                              [&](const Vehicle& v) { return overtaking(v); });
+  if (someone_overtakes) ++counters_.overtaking_steps;
   if (planning || someone_overtakes) perceive(in);
   if (planning) {
     ++counters_.planning_steps;

@@ -49,6 +49,7 @@ struct Counters {
   std::uint64_t planning_steps = 0;  // steps that built the lane index and planned every vehicle
   std::uint64_t plans = 0;           // vehicle plans (speed ramp and lane choice) made
   std::uint64_t overtakings_started = 0;  // passes in the oncoming lane begun in the outer regions
+  std::uint64_t overtaking_steps = 0;     // steps with a pass under way here (micro's model drives it)
 };
 
 // The outer regions served by a meso instance (kMesoBoth, kMesoFront or kMesoRear).
