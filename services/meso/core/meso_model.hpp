@@ -7,8 +7,9 @@
 // plan is the speed v_next it reaches after T, on a straight ramp (constant acceleration) that the
 // core integrates step by step until the next plan:
 //
-//   v_eq    = min(V_e(gap + T (v_leader - v)), v0_local)   (the gap expected after T; v0_local:
-//                                                     speed adaptation, limits ahead)
+//   v_eq    = min(V_e(gap + T (v_leader - v)), v0_local)   (the gap expected after T, the present
+//                                                     one when T is one step; v0_local: speed
+//                                                     adaptation, limits ahead)
 //   v_relax = v + clamp((v_eq - v) T / tau, -b T, a T)
 //   v_safe  = v_leader + sqrt(2 b (gap - s0))         (can still brake comfortably to the leader)
 //   v_next  = v_relax                    if v_relax <= v_safe
@@ -88,8 +89,9 @@ inline MesoSpeed next_speed(const Vehicle& v, const EquilibriumSpeed& eq, const 
   const bool led = ahead.gap_m >= 0.0;
   // The equilibrium at the gap expected at the end of the period: without that anticipation a
   // platoon planned once a second oscillates (each driver answers the gap its leader left a
-  // period ago).
-  const double expected_gap_m = std::max(0.0, ahead.gap_m + t * (ahead.leader_speed_mps - v.speed_mps));
+  // period ago). Planned at every step, at the present gap, as before plans had periods.
+  const double expected_gap_m =
+      h.steps > 1 ? std::max(0.0, ahead.gap_m + t * (ahead.leader_speed_mps - v.speed_mps)) : ahead.gap_m;
   const double target = led ? std::min(desired_speed_mps, eq.at(expected_gap_m)) : desired_speed_mps;
   const double change = std::clamp((target - v.speed_mps) * t / m.relaxation_time_s, -p.comfort_decel_mps2 * t,
                                    p.max_accel_mps2 * t);
