@@ -89,6 +89,43 @@ ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, co
   const double scale = sample_flow_ > 0.0 ? flow_ / sample_flow_ : 1.0;
   vehicle_density_ = static_cast<double>(vehicles) / observed_length * scale;
   platoon_density_ = static_cast<double>(platoons_.size()) / observed_length * scale;
+  std::vector<std::pair<double, double>> by_speed;  // (speed, size)
+  by_speed.reserve(platoons_.size());
+  for (const auto& p : platoons_) by_speed.emplace_back(p.speed_mps, static_cast<double>(p.members.size()));
+  std::sort(by_speed.begin(), by_speed.end());
+  SpeedSums sum;
+  for (const auto& [speed, size] : by_speed) {
+    sum.count += 1.0;
+    sum.speed += speed;
+    sum.members += size;
+    sum.members_speed += size * speed;
+    sorted_speeds_mps_.push_back(speed);
+    running_.push_back(sum);
+  }
+}
+
+ObservedStream::SpeedSums ObservedStream::below(double u) const {
+  const auto n = std::lower_bound(sorted_speeds_mps_.begin(), sorted_speeds_mps_.end(), u) - sorted_speeds_mps_.begin();
+  return n == 0 ? SpeedSums{} : running_[static_cast<std::size_t>(n - 1)];
+}
+
+double ObservedStream::sum_faster_by(double u, bool per_vehicle) const {
+  if (running_.empty()) return 0.0;
+  const SpeedSums& all = running_.back();
+  const SpeedSums slow = below(u);
+  return per_vehicle ? (all.members_speed - slow.members_speed) - u * (all.members - slow.members)
+                     : (all.speed - slow.speed) - u * (all.count - slow.count);
+}
+
+double ObservedStream::sum_slower_by(double u, bool per_vehicle) const {
+  const SpeedSums slow = below(u);
+  return per_vehicle ? u * slow.members - slow.members_speed : u * slow.count - slow.speed;
+}
+
+double ObservedStream::sum_closing_with(double u, bool per_vehicle) const {
+  if (running_.empty()) return 0.0;
+  const SpeedSums& all = running_.back();
+  return per_vehicle ? all.members_speed + u * all.members : all.speed + u * all.count;
 }
 
 double ObservedStream::mean_speed_mps() const {
@@ -99,14 +136,6 @@ double ObservedStream::mean_speed_mps() const {
     n += snap.size();
   }
   return n == 0 ? 0.0 : sum / static_cast<double>(n);
-}
-
-template <typename Weight>
-double ObservedStream::platoon_mean(Weight w, bool per_vehicle) const {
-  if (platoons_.empty()) return 0.0;
-  double sum = 0.0;
-  for (const auto& p : platoons_) sum += (per_vehicle ? static_cast<double>(p.members.size()) : 1.0) * w(p.speed_mps);
-  return sum / static_cast<double>(platoons_.size());
 }
 
 template <typename Weight>
@@ -122,27 +151,27 @@ const Platoon& ObservedStream::draw(Random& rng, Weight w) const {
 }
 
 double ObservedStream::vehicles_rear_per_s(double u) const {
-  return platoon_density_ * platoon_mean([u](double v) { return std::max(0.0, v - u); }, true);
+  return platoons_.empty() ? 0.0 : platoon_density_ * sum_faster_by(u, true) / static_cast<double>(platoons_.size());
 }
 
 double ObservedStream::vehicles_front_per_s(double u) const {
-  return platoon_density_ * platoon_mean([u](double v) { return std::max(0.0, u - v); }, true);
+  return platoons_.empty() ? 0.0 : platoon_density_ * sum_slower_by(u, true) / static_cast<double>(platoons_.size());
 }
 
 double ObservedStream::vehicles_oncoming_per_s(double u) const {
-  return platoon_density_ * platoon_mean([u](double v) { return v + u; }, true);
+  return platoons_.empty() ? 0.0 : platoon_density_ * sum_closing_with(u, true) / static_cast<double>(platoons_.size());
 }
 
 double ObservedStream::rate_rear_per_s(double u) const {
-  return platoon_density_ * platoon_mean([u](double v) { return std::max(0.0, v - u); });
+  return platoons_.empty() ? 0.0 : platoon_density_ * sum_faster_by(u, false) / static_cast<double>(platoons_.size());
 }
 
 double ObservedStream::rate_front_per_s(double u) const {
-  return platoon_density_ * platoon_mean([u](double v) { return std::max(0.0, u - v); });
+  return platoons_.empty() ? 0.0 : platoon_density_ * sum_slower_by(u, false) / static_cast<double>(platoons_.size());
 }
 
 double ObservedStream::rate_oncoming_per_s(double u) const {
-  return platoon_density_ * platoon_mean([u](double v) { return v + u; });
+  return platoons_.empty() ? 0.0 : platoon_density_ * sum_closing_with(u, false) / static_cast<double>(platoons_.size());
 }
 
 const Platoon& ObservedStream::draw_rear(Random& rng, double u) const {

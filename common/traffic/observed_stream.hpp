@@ -97,8 +97,12 @@ class ObservedStream {
  private:
   std::vector<StreamVehicle> one_stretch(Random& rng, double length_m) const;
   // Mean over platoons of w(platoon speed), times the platoon's size if `per_vehicle`.
-  template <typename Weight>
-  double platoon_mean(Weight w, bool per_vehicle = false) const;
+  // Sum over platoons (each times its size if `per_vehicle`) of max(0, v - u), of max(0, u - v)
+  // and of v + u, from the speeds sorted with running sums: the generator asks for these rates
+  // at every step, and a pass over the observed platoons was a third of its cost.
+  double sum_faster_by(double u, bool per_vehicle) const;
+  double sum_slower_by(double u, bool per_vehicle) const;
+  double sum_closing_with(double u, bool per_vehicle) const;
   template <typename Weight>
   const Platoon& draw(Random& rng, Weight w) const;
 
@@ -109,6 +113,17 @@ class ObservedStream {
   double platoon_density_ = 0.0;  // scaled to the demanded flow
   std::vector<std::vector<StreamVehicle>> snapshots_;  // sorted by offset
   std::vector<Platoon> platoons_;
+  // The platoons' speeds in ascending order, and running sums from the slowest up to each one
+  // (inclusive) of 1, v, size and size x v.
+  struct SpeedSums {
+    double count = 0.0;
+    double speed = 0.0;
+    double members = 0.0;
+    double members_speed = 0.0;
+  };
+  std::vector<double> sorted_speeds_mps_;
+  std::vector<SpeedSums> running_;
+  SpeedSums below(double u) const;  // over the platoons slower than u
 };
 
 // A stretch must not place two vehicles on top of each other: where one overlaps the vehicle ahead

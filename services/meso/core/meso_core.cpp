@@ -144,7 +144,6 @@ void MesoCore::perceive(const StepInput& in) {
   build_index(index_, fleet_, in.world_prev, in.ego_prev ? &*in.ego_prev : nullptr);
 }
 
-
 Ahead MesoCore::ahead_of(const Vehicle& v, bool own_lane_only) const {
   Ahead out;
   if (const Occupant* leader = own_lane_only ? leader_of(v, index_, v.lane) : nearest_leader(v, index_)) {
