@@ -290,6 +290,42 @@ TEST(MesoCore, ACarPassesASlowTruckInTheOuterRegionOfARuralRoad) {
   EXPECT_GT(a.s_m, b.s_m + 10.0);
 }
 
+// The same pass begun just behind the inner region: the overtaker crosses into it while it passes,
+// stays meso's until it is back in its lane (a handoff does not carry the manoeuvre), and is then
+// handed to micro.
+TEST(MesoCore, AnOvertakerIsHandedToMicroOnlyWhenBackInItsLane) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.road.kind = RoadKind::kRural;
+  sc.road.lanes_forward = 1;
+  sc.road.lanes_backward = 1;
+  meso::MesoCore core(sc, kMesoId);
+  const EgoObservation ego = ego_at(0, 5000.0, 0.0);
+  const WindowBounds w = WindowBounds::around(5000.0, sc.window);
+  Vehicle fast = car(sc, 1, 0, w.inner_rear_m - 70.0, 22.0, 25.0);
+  fast.driver.lane_change = LaneChangeModel::kOvertaking;
+  Vehicle slow = car(sc, 2, 0, w.inner_rear_m - 30.0, 16.0, 16.0);
+  slow.driver.lane_change = LaneChangeModel::kNone;
+  StepOutput out = run_step(core, 1, ego, {birth(fast, Role::kMeso, Region::kOuterRear), birth(slow, Role::kMeso, Region::kOuterRear)}, {});
+  bool passed_inside = false;  // meso's, overtaking, within the inner region
+  bool handed_over = false;
+  for (Step k = 2; k < 400 && !handed_over; ++k) {
+    out = run_step(core, k, ego, {}, as_world(out, kMesoId));
+    for (const Handoff& h : out.handoffs) {
+      if (h.vehicle.id != 1) continue;
+      EXPECT_EQ(h.to_role, Role::kMicro);
+      EXPECT_FALSE(h.vehicle.overtaking.active()) << "step " << k;
+      EXPECT_EQ(h.vehicle.target_lane(), 0) << "step " << k;
+      handed_over = true;
+    }
+    for (const Vehicle& v : core.fleet().vehicles()) {
+      passed_inside |= v.id == 1 && v.overtaking.active() && w.in_inner(v.s_m);
+    }
+  }
+  EXPECT_EQ(core.counters().overtakings_started, 1U);
+  EXPECT_TRUE(passed_inside);
+  EXPECT_TRUE(handed_over);
+}
+
 // A vehicle that has just begun to change lanes, and one placed in its target lane in that same
 // step, close ahead (a birth at the window's edge, decided without knowing of the change). Found
 // in a 30-minute drive: the changer braked at 39 m/s^2, its peers refused that sample, so the
