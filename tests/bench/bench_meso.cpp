@@ -274,8 +274,9 @@ void print_vehicle_costs(const Figures& micro_only, const Figures& split) {
               micro_cost, micro_only.us_per_vehicle_step(kMicroCore), meso_cost,
               meso_cost > 0.0 ? micro_cost / meso_cost : 0.0);
   const meso::Counters& m = split.meso;
-  std::printf("  meso planned at %.1f %% of the steps (every %.1f s on average), %.3f plans per vehicle-step; "
-              "a pass under way at %.1f %% of the steps (%llu passes)\n",
+  std::printf("  meso planned at %.1f %% of the steps (every %.1f s on average), %.3f plans per vehicle-step "
+              "(%.1f %% of them for alert vehicles between updates); a pass under way at %.1f %% of the steps "
+              "(%llu passes)\n",
               m.steps > 0 ? 100.0 * static_cast<double>(m.planning_steps) / static_cast<double>(m.steps) : 0.0,
               m.planning_steps > 0 ? split.seconds_per_step * static_cast<double>(m.steps) /
                                          static_cast<double>(m.planning_steps)
@@ -283,6 +284,7 @@ void print_vehicle_costs(const Figures& micro_only, const Figures& split) {
               split.vehicle_steps[kMesoCore] > 0
                   ? static_cast<double>(m.plans) / static_cast<double>(split.vehicle_steps[kMesoCore])
                   : 0.0,
+              m.plans > 0 ? 100.0 * static_cast<double>(m.alert_plans) / static_cast<double>(m.plans) : 0.0,
               m.steps > 0 ? 100.0 * static_cast<double>(m.overtaking_steps) / static_cast<double>(m.steps) : 0.0,
               static_cast<unsigned long long>(m.overtakings_started));
   const CostLine micro_line = cost_line(micro_only, split, kMicroCore);

@@ -258,6 +258,42 @@ TEST(MesoCore, TwoVehiclesChoosingTheSameRoomAtOnceDoNotBothTakeIt) {
   EXPECT_TRUE(first->lane_change.moving());
 }
 
+// A car in the rear outer region behind a vehicle that brakes at 9 m/s^2 to a standstill just after
+// a plan. The car notices at the next plan (a second later, a driver's
+// reaction), then is alert and planned at every step: it stops behind the leader, never into it.
+// Planned only once a second it drove into it (found in a 30-minute rural drive).
+TEST(MesoCore, ACarBehindALeaderThatBrakesHardStopsBehindIt) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.road.lanes_forward = 1;
+  sc.window.outer_behind_m = 1000.0;
+  meso::MesoCore core(sc, kMesoId);
+  const EgoObservation ego = ego_at(0, 3000.0, 20.0);
+  const WindowBounds w = WindowBounds::around(3000.0, sc.window);
+  const Vehicle follower = car(sc, 1, 0, w.rear_edge_m + 50.0, 20.0, 25.0);
+  ObservedVehicle leader;  // another owner's (the world as published)
+  leader.id = 2;
+  leader.owner = kMicroId;
+  leader.s_m = follower.s_m + 45.0;
+  leader.speed_mps = 20.0;
+  StepOutput out = run_step(core, 10, ego, {birth(follower, Role::kMeso, Region::kOuterRear)}, {leader});
+  double min_gap = 1e9;
+  for (Step k = 11; k < 120; ++k) {
+    const double brake = k > 11 ? 9.0 : 0.0;
+    leader.accel_mps2 = leader.speed_mps > 0.0 ? -brake : 0.0;
+    leader.speed_mps = std::max(0.0, leader.speed_mps - brake * 0.1);
+    leader.s_m += leader.speed_mps * 0.1;
+    std::vector<ObservedVehicle> world = as_world(out, kMesoId);
+    world.push_back(leader);
+    out = run_step(core, k, ego, {}, world);
+    ASSERT_EQ(core.fleet().size(), 1U);
+    const Vehicle& v = core.fleet().vehicles()[0];
+    min_gap = std::min(min_gap, leader.s_m - v.s_m - 0.5 * (v.length_m + leader.length_m));
+  }
+  EXPECT_GT(min_gap, 0.0);
+  EXPECT_NEAR(core.fleet().vehicles()[0].speed_mps, 0.0, 0.01);
+  EXPECT_GT(core.counters().alert_plans, 0U);
+}
+
 // On a two-lane rural road a car that overtakes, held up behind a slow truck in the front outer
 // region with the oncoming lane empty, passes it there (driven by micro's model from the start
 // of the pass until it is back in its lane) and stays meso's while it passes.

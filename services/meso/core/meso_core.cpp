@@ -64,17 +64,17 @@ StepOutput MesoCore::step(const StepInput& in) {
   ++counters_.steps;
   adopt(in);
   overtakers_.clear();
-  const bool planning = in.step % static_cast<Step>(steps_per_plan_) == 0;
+  const int into_period = static_cast<int>(in.step % static_cast<Step>(steps_per_plan_));
+  const bool planning = into_period == 0;
   const bool someone_overtakes = std::any_of(fleet_.vehicles().begin(), fleet_.vehicles().end(),
                                              [&](const Vehicle& v) { return overtaking(v); });
   if (someone_overtakes) ++counters_.overtaking_steps;
-  if (planning || someone_overtakes) perceive(in);
-  if (planning) {
+  if (planning || someone_overtakes || !alert_.empty()) perceive(in);
+  if (planning || !alert_.empty()) {
     ++counters_.planning_steps;
-    plan();
-  } else {
-    confirm_changes();
+    plan(planning, steps_per_plan_ - into_period);
   }
+  if (!planning) confirm_changes();
   drive_overtakers();
   move();
   return hand_off(in);
@@ -147,14 +147,14 @@ void MesoCore::perceive(const StepInput& in) {
 Ahead MesoCore::ahead_of(const Vehicle& v, bool own_lane_only) const {
   Ahead out;
   if (const Occupant* leader = own_lane_only ? leader_of(v, index_, v.lane) : nearest_leader(v, index_)) {
-    out = {std::max(0.0, gap_between(*leader, v.progress_m(), v.length_m)), leader->speed_mps};
+    out = {std::max(0.0, gap_between(*leader, v.progress_m(), v.length_m)), leader->speed_mps, leader->accel_mps2};
   }
   // A vehicle of the other direction in its lane (an overtaker that has not returned yet) is taken
   // as a standing obstacle: it brakes when it could no longer stop comfortably short of it, as a
   // driver who expects the overtaker to pull back in (micro's overtakers plan on that).
   if (const Occupant* o = index_.oncoming(v.direction, v.lane, v.progress_m())) {
     const double gap = std::max(0.0, oncoming_gap(*o, v.progress_m(), v.length_m));
-    if (out.gap_m < 0.0 || gap < out.gap_m) out = {gap, 0.0};
+    if (out.gap_m < 0.0 || gap < out.gap_m) out = {gap, 0.0, 0.0, true};
   }
   const double to_closure = env_.ahead().distance_to_closure_m(v.direction, v.lane, v.s_m) - 0.5 * v.length_m;
   if (to_closure < env_.rules().mandatory_lookahead_m && (out.gap_m < 0.0 || to_closure < out.gap_m)) {
@@ -169,8 +169,17 @@ const EquilibriumSpeed& MesoCore::equilibrium_of(const Vehicle& v) {
   return it->second;
 }
 
-void MesoCore::plan() {
-  const PlanHorizon horizon{scenario_.step_s, steps_per_plan_};
+bool MesoCore::alert(VehicleId id) const { return std::binary_search(alert_.begin(), alert_.end(), id); }
+
+bool MesoCore::calls_for_alert(const Vehicle& v, const Ahead& ahead, const MesoSpeed& plan) {
+  const bool leader_brakes_hard =
+      ahead.gap_m >= 0.0 && ahead.leader_accel_mps2 < -v.driver.car_following.idm.comfort_decel_mps2;
+  return plan.emergency || ahead.oncoming || leader_brakes_hard;
+}
+
+void MesoCore::plan(bool everyone, int steps_left) {
+  const PlanHorizon horizon{scenario_.step_s, steps_left};
+  std::vector<VehicleId> still_alert;
   // Every plan from the same snapshot first, then commit (gaps do not see this step's plans).
   struct Plan {
     std::size_t index;
@@ -184,9 +193,10 @@ void MesoCore::plan() {
   for (std::size_t i = 0; i < vehicles.size(); ++i) {
     Vehicle& v = vehicles[i];
     if (overtaking(v)) continue;  // driven by micro's model (drive_overtakers)
+    if (!everyone && !alert(v.id)) continue;
     const double desired = actor_desired_speed_mps(
         v, env_.speeds().desired_speed_mps(v.direction, v.s_m, v.driver.desired_speed_mps(), v.driver.basic_median_mps()));
-    if (starts_overtaking(v, desired)) {
+    if (everyone && starts_overtaking(v, desired)) {
       overtakers_.push_back(i);
       continue;
     }
@@ -194,6 +204,7 @@ void MesoCore::plan() {
     const Ahead ahead = ahead_of(v, call_off);
     const MesoSpeed ms = next_speed(v, equilibrium_of(v), ahead, desired, horizon, model_);
     if (ms.emergency) ++counters_.emergency_stops;
+    if (calls_for_alert(v, ahead, ms)) still_alert.push_back(v.id);
     const int must = mandatory_target_lane(v, env_);
     const bool may_change = must >= 0 || chooses_lanes_freely(v);  // actors only where the director asks
     const std::optional<int> lane = may_change ? choose_lane(v, index_, ahead.gap_m, lane_rules_, must) : std::nullopt;
@@ -201,6 +212,8 @@ void MesoCore::plan() {
     plans.push_back({i, ms, lane, call_off});
   }
   counters_.plans += plans.size();
+  counters_.alert_plans += everyone ? 0 : plans.size();
+  alert_ = std::move(still_alert);  // in id order, as the fleet
   std::vector<std::size_t> changing;  // vehicles that begin a change in this plan
   for (const Plan& p : plans) {
     Vehicle& v = vehicles[p.index];

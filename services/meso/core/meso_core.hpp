@@ -7,7 +7,8 @@
 //   perceive  the lane index from the fleet, the rest of the world at step-1 and the ego (only
 //             at a step that plans)
 //   plan      every vehicle once per update period (`update_period_s`; every step in a scenario
-//             with plays: model_params_for), all from the same
+//             with plays: model_params_for), and an alert one (its leader brakes hard, an
+//             oncoming vehicle ahead, an emergency) at every step, all from the same
 //             snapshot, then committed: its speed ramp over the next period from its gap and its
 //             desired speed at its place (meso_model.hpp), and its lane choice (meso_lanes.hpp).
 //             Between plans a vehicle keeps its ramp (one that just joined, the acceleration it
@@ -48,6 +49,7 @@ struct Counters {
   std::uint64_t steps = 0;
   std::uint64_t planning_steps = 0;  // steps that built the lane index and planned every vehicle
   std::uint64_t plans = 0;           // vehicle plans (speed ramp and lane choice) made
+  std::uint64_t alert_plans = 0;     // of which between updates, for alert vehicles
   std::uint64_t overtakings_started = 0;  // passes in the oncoming lane begun in the outer regions
   std::uint64_t overtaking_steps = 0;     // steps with a pass under way here (micro's model drives it)
 };
@@ -78,7 +80,14 @@ class MesoCore {
   // took its room (meso_lanes.hpp, crowds_change).
   void confirm_changes();
   void perceive(const StepInput& in);
-  void plan();
+  // Plans every vehicle (`everyone`, once per update period) or only the alert ones (in between),
+  // each over the `steps_left` steps to the next update. A vehicle is alert, and planned at every
+  // step, while its leader brakes harder than it would brake comfortably, an oncoming vehicle is
+  // its obstacle, or its plan had to keep it off its leader (an emergency): where a second
+  // without a look would be too long.
+  void plan(bool everyone, int steps_left);
+  bool alert(VehicleId id) const;
+  static bool calls_for_alert(const Vehicle& v, const Ahead& ahead, const MesoSpeed& plan);
   // Overtaking in the oncoming lane of a two-lane road: a driver that overtakes asks at each plan
   // whether to start (as micro's drivers do once a decision interval); from the start until it is
   // back in its lane it is driven by micro's driver model at every step.
@@ -107,6 +116,7 @@ class MesoCore {
   int steps_per_plan_ = 1;              // the update period in steps
   std::vector<VehicleId> newcomers_;    // joined at this step
   std::vector<std::size_t> overtakers_;  // fleet positions driven by micro's model at this step, ascending
+  std::vector<VehicleId> alert_;         // planned at every step (plan), in id order
   DrivingEnvironment env_;
   std::unordered_map<VehicleId, EquilibriumSpeed> equilibrium_;  // per owned vehicle's driver
   Counters counters_;

@@ -54,6 +54,8 @@ struct PlanHorizon {
 struct Ahead {
   double gap_m = -1.0;  // < 0: no leader
   double leader_speed_mps = 0.0;
+  double leader_accel_mps2 = 0.0;
+  bool oncoming = false;  // the obstacle is a vehicle of the other direction in the lane
 };
 
 struct MesoSpeed {
