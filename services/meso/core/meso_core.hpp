@@ -6,8 +6,7 @@
 //             their actors
 //   perceive  the lane index from the fleet, the rest of the world at step-1 and the ego (only
 //             at a step that plans)
-//   plan      every vehicle once per update period (`update_period_s`; every step in a scenario
-//             with plays: model_params_for), and an alert one (its leader brakes hard, an
+//   plan      every vehicle once per update period (`update_period_s`), and an alert one (its leader brakes hard, an
 //             oncoming vehicle ahead, an emergency) at every step, all from the same
 //             snapshot, then committed: its speed ramp over the next period from its gap and its
 //             desired speed at its place (meso_model.hpp), and its lane choice (meso_lanes.hpp).
@@ -58,8 +57,7 @@ struct Counters {
 std::vector<Region> regions_of_instance(std::uint8_t instance);
 
 // The meso model's parameters for a scenario: leaders brake at most as hard as the hardest-braking
-// vehicle type, and never harder than the friction limit's default; a scenario with plays is
-// planned at every step.
+// vehicle type, and never harder than the friction limit's default.
 MesoModelParams model_params_for(const ScenarioConfig& scenario);
 
 class MesoCore {

@@ -10,7 +10,7 @@
 //   v_eq    = min(V_e(gap + T (v_leader - v)), v0_local)   (the gap expected after T, the present
 //                                                     one when T is one step; v0_local: speed
 //                                                     adaptation, limits ahead)
-//   v_relax = v + clamp((v_eq - v) T / tau, -b T, a T)
+//   v_relax = v + clamp((v_eq - v) (1 - exp(-T / tau)), -b T, a T)
 //   v_safe  = v_leader + sqrt(2 b (gap - s0))         (can still brake comfortably to the leader)
 //   v_next  = v_relax                    if v_relax <= v_safe
 //           = max(v_safe, v - b_max T)   otherwise (brakes harder, up to the vehicle's limit)
@@ -95,8 +95,11 @@ inline MesoSpeed next_speed(const Vehicle& v, const EquilibriumSpeed& eq, const 
   const double expected_gap_m =
       h.steps > 1 ? std::max(0.0, ahead.gap_m + t * (ahead.leader_speed_mps - v.speed_mps)) : ahead.gap_m;
   const double target = led ? std::min(desired_speed_mps, eq.at(expected_gap_m)) : desired_speed_mps;
-  const double change = std::clamp((target - v.speed_mps) * t / m.relaxation_time_s, -p.comfort_decel_mps2 * t,
-                                   p.max_accel_mps2 * t);
+  // The relaxation dv/dt = (v_eq - v) / tau solved over the period (not a step of length T on its
+  // slope, which reached the target in one period: the outer traffic then settled twice as fast
+  // as with per-step plans, and the cut-in play succeeded in 64 % of 50 runs instead of 74 %).
+  const double relaxed = 1.0 - std::exp(-t / m.relaxation_time_s);
+  const double change = std::clamp((target - v.speed_mps) * relaxed, -p.comfort_decel_mps2 * t, p.max_accel_mps2 * t);
   double next = v.speed_mps + change;
   if (led) {
     const double room = std::max(0.0, ahead.gap_m - p.min_gap_m);
