@@ -58,6 +58,11 @@ std::size_t adopt_handoffs(Fleet& fleet, HandoffInbox& inbox, std::vector<Handof
   return n;
 }
 
+Occupant as_occupant(const Vehicle& v) {
+  return Occupant{v.id,       v.progress_m(), v.speed_mps, v.accel_mps2,
+                  v.length_m, signal_of(static_cast<std::uint8_t>(v.indicator()))};
+}
+
 void build_index(LaneIndex& index, const Fleet& fleet, const std::vector<ObservedVehicle>& world,
                  const EgoObservation* ego) {
   index.clear();

@@ -52,6 +52,9 @@ class Fleet {
 std::size_t adopt_handoffs(Fleet& fleet, HandoffInbox& inbox, std::vector<Handoff> handoffs, Step step, double dt_s,
                            std::vector<VehicleId>* joined = nullptr);
 
+// A vehicle as the lane index holds it.
+Occupant as_occupant(const Vehicle& v);
+
 // Fills `index` with the fleet, every vehicle of the world that the fleet does not own (the
 // world's copy of owned vehicles is the fleet's own state), and the ego.
 void build_index(LaneIndex& index, const Fleet& fleet, const std::vector<ObservedVehicle>& world,

@@ -4,6 +4,7 @@
 
 #include "traffic/actor_driving.hpp"
 #include "traffic/driving.hpp"
+#include "traffic/fleet.hpp"
 
 namespace entourage {
 
@@ -11,11 +12,6 @@ namespace {
 // A vehicle seeking a gap drops back from the vehicle it lets by to this much below that one's
 // speed and holds it (slower only holds its own lane up; back at full speed it never falls behind).
 constexpr double kLetBySpeed_mps = 5.0;
-
-Occupant as_occupant(const Vehicle& v) {
-  return Occupant{v.id,     v.progress_m(), v.speed_mps, v.accel_mps2,
-                  v.length_m, signal_of(static_cast<std::uint8_t>(v.indicator()))};
-}
 
 // Acceleration another driver (speed `speed_mps`, progress `progress_m`, length `length_m`) would
 // have behind `leader`, estimated with the deciding driver's own parameters (a driver judges

@@ -7,19 +7,20 @@
 
 namespace entourage {
 
+// Between the centres of `lane` and `target_lane`, `fraction` of the way from the first.
+inline double lateral_offset_m(const Road& road, Direction dir, int lane, int target_lane, double fraction) {
+  const double d_from = road.lane_center_d(dir, lane);
+  if (target_lane == lane) return d_from;
+  return d_from + (road.lane_center_d(dir, target_lane) - d_from) * fraction;
+}
+
 inline double lateral_offset_m(const Road& road, const Vehicle& v) {
-  const double d_from = road.lane_center_d(v.direction, v.lane);
-  if (!v.lane_change.moving()) return d_from;
-  const double d_to = road.lane_center_d(v.direction, v.lane_change.to_lane);
-  return d_from + (d_to - d_from) * v.lane_change.lateral_fraction();
+  return lateral_offset_m(road, v.direction, v.lane, v.target_lane(), v.lane_change.lateral_fraction());
 }
 
 // The same for a published state.
 inline double lateral_offset_m(const Road& road, const VehicleReport& r) {
-  const double d_from = road.lane_center_d(r.direction, r.lane);
-  if (r.target_lane == r.lane) return d_from;
-  const double d_to = road.lane_center_d(r.direction, r.target_lane);
-  return d_from + (d_to - d_from) * r.lateral_fraction;
+  return lateral_offset_m(road, r.direction, r.lane, r.target_lane, r.lateral_fraction);
 }
 
 }  // namespace entourage

@@ -104,6 +104,10 @@ ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, co
   }
 }
 
+double ObservedStream::as_rate_per_s(double sum_over_platoons) const {
+  return platoons_.empty() ? 0.0 : platoon_density_ * sum_over_platoons / static_cast<double>(platoons_.size());
+}
+
 ObservedStream::SpeedSums ObservedStream::below(double u) const {
   const auto n = std::lower_bound(sorted_speeds_mps_.begin(), sorted_speeds_mps_.end(), u) - sorted_speeds_mps_.begin();
   return n == 0 ? SpeedSums{} : running_[static_cast<std::size_t>(n - 1)];
@@ -151,27 +155,27 @@ const Platoon& ObservedStream::draw(Random& rng, Weight w) const {
 }
 
 double ObservedStream::vehicles_rear_per_s(double u) const {
-  return platoons_.empty() ? 0.0 : platoon_density_ * sum_faster_by(u, true) / static_cast<double>(platoons_.size());
+  return as_rate_per_s(sum_faster_by(u, true));
 }
 
 double ObservedStream::vehicles_front_per_s(double u) const {
-  return platoons_.empty() ? 0.0 : platoon_density_ * sum_slower_by(u, true) / static_cast<double>(platoons_.size());
+  return as_rate_per_s(sum_slower_by(u, true));
 }
 
 double ObservedStream::vehicles_oncoming_per_s(double u) const {
-  return platoons_.empty() ? 0.0 : platoon_density_ * sum_closing_with(u, true) / static_cast<double>(platoons_.size());
+  return as_rate_per_s(sum_closing_with(u, true));
 }
 
 double ObservedStream::rate_rear_per_s(double u) const {
-  return platoons_.empty() ? 0.0 : platoon_density_ * sum_faster_by(u, false) / static_cast<double>(platoons_.size());
+  return as_rate_per_s(sum_faster_by(u, false));
 }
 
 double ObservedStream::rate_front_per_s(double u) const {
-  return platoons_.empty() ? 0.0 : platoon_density_ * sum_slower_by(u, false) / static_cast<double>(platoons_.size());
+  return as_rate_per_s(sum_slower_by(u, false));
 }
 
 double ObservedStream::rate_oncoming_per_s(double u) const {
-  return platoons_.empty() ? 0.0 : platoon_density_ * sum_closing_with(u, false) / static_cast<double>(platoons_.size());
+  return as_rate_per_s(sum_closing_with(u, false));
 }
 
 const Platoon& ObservedStream::draw_rear(Random& rng, double u) const {

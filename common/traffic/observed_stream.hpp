@@ -103,6 +103,9 @@ class ObservedStream {
   double sum_faster_by(double u, bool per_vehicle) const;
   double sum_slower_by(double u, bool per_vehicle) const;
   double sum_closing_with(double u, bool per_vehicle) const;
+  // A sum over the observed platoons of a speed (per platoon or per vehicle) as a rate of the
+  // stream that carries the demand: its mean per platoon times the platoons per metre.
+  double as_rate_per_s(double sum_over_platoons) const;
   template <typename Weight>
   const Platoon& draw(Random& rng, Weight w) const;
 

@@ -294,23 +294,37 @@ TEST(MesoCore, ACarBehindALeaderThatBrakesHardStopsBehindIt) {
   EXPECT_GT(core.counters().alert_plans, 0U);
 }
 
-// On a two-lane rural road a car that overtakes, held up behind a slow truck in the front outer
-// region with the oncoming lane empty, passes it there (driven by micro's model from the start
-// of the pass until it is back in its lane) and stays meso's while it passes.
-TEST(MesoCore, ACarPassesASlowTruckInTheOuterRegionOfARuralRoad) {
+// A road of one lane each way with oncoming traffic, where drivers that overtake pass in the
+// oncoming lane.
+ScenarioConfig two_lane_rural() {
   ScenarioConfig sc = minimal_scenario();
   sc.road.kind = RoadKind::kRural;
   sc.road.lanes_forward = 1;
   sc.road.lanes_backward = 1;
+  return sc;
+}
+
+// Births into `region`: a car that overtakes (id 1) at `s_m`, held up 40 m behind a slow vehicle
+// (id 2) that does not change lanes.
+std::vector<Handoff> overtaker_behind_slow_vehicle(const ScenarioConfig& sc, double s_m, Region region) {
+  Vehicle fast = car(sc, 1, 0, s_m, 22.0, 25.0);
+  fast.driver.lane_change = LaneChangeModel::kOvertaking;
+  Vehicle slow = car(sc, 2, 0, s_m + 40.0, 16.0, 16.0);
+  slow.driver.lane_change = LaneChangeModel::kNone;
+  return {birth(fast, Role::kMeso, region), birth(slow, Role::kMeso, region)};
+}
+
+// On a two-lane rural road a car that overtakes, held up behind a slow truck in the front outer
+// region with the oncoming lane empty, passes it there (driven by micro's model from the start
+// of the pass until it is back in its lane) and stays meso's while it passes.
+TEST(MesoCore, ACarPassesASlowTruckInTheOuterRegionOfARuralRoad) {
+  ScenarioConfig sc = two_lane_rural();
   sc.window.outer_ahead_m = 3000.0;
   meso::MesoCore core(sc, kMesoId);
   const EgoObservation ego = ego_at(0, 3000.0, 0.0);
   const WindowBounds w = WindowBounds::around(3000.0, sc.window);
-  Vehicle fast = car(sc, 1, 0, w.inner_front_m + 60.0, 22.0, 25.0);
-  fast.driver.lane_change = LaneChangeModel::kOvertaking;
-  Vehicle slow = car(sc, 2, 0, w.inner_front_m + 100.0, 16.0, 16.0);
-  slow.driver.lane_change = LaneChangeModel::kNone;
-  StepOutput out = run_step(core, 1, ego, {birth(fast, Role::kMeso, Region::kOuterFront), birth(slow, Role::kMeso, Region::kOuterFront)}, {});
+  StepOutput out =
+      run_step(core, 1, ego, overtaker_behind_slow_vehicle(sc, w.inner_front_m + 60.0, Region::kOuterFront), {});
   bool used_oncoming_lane = false;
   for (Step k = 2; k < 400; ++k) {
     out = run_step(core, k, ego, {}, as_world(out, kMesoId));
@@ -330,18 +344,12 @@ TEST(MesoCore, ACarPassesASlowTruckInTheOuterRegionOfARuralRoad) {
 // stays meso's until it is back in its lane (a handoff does not carry the manoeuvre), and is then
 // handed to micro.
 TEST(MesoCore, AnOvertakerIsHandedToMicroOnlyWhenBackInItsLane) {
-  ScenarioConfig sc = minimal_scenario();
-  sc.road.kind = RoadKind::kRural;
-  sc.road.lanes_forward = 1;
-  sc.road.lanes_backward = 1;
+  const ScenarioConfig sc = two_lane_rural();
   meso::MesoCore core(sc, kMesoId);
   const EgoObservation ego = ego_at(0, 5000.0, 0.0);
   const WindowBounds w = WindowBounds::around(5000.0, sc.window);
-  Vehicle fast = car(sc, 1, 0, w.inner_rear_m - 70.0, 22.0, 25.0);
-  fast.driver.lane_change = LaneChangeModel::kOvertaking;
-  Vehicle slow = car(sc, 2, 0, w.inner_rear_m - 30.0, 16.0, 16.0);
-  slow.driver.lane_change = LaneChangeModel::kNone;
-  StepOutput out = run_step(core, 1, ego, {birth(fast, Role::kMeso, Region::kOuterRear), birth(slow, Role::kMeso, Region::kOuterRear)}, {});
+  StepOutput out =
+      run_step(core, 1, ego, overtaker_behind_slow_vehicle(sc, w.inner_rear_m - 70.0, Region::kOuterRear), {});
   bool passed_inside = false;  // meso's, overtaking, within the inner region
   bool handed_over = false;
   for (Step k = 2; k < 400 && !handed_over; ++k) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <optional>
 
 #include "meso/core/meso_lanes.hpp"
@@ -61,10 +62,13 @@ StepOutput MesoCore::step(const StepInput& in) {
   ++counters_.steps;
   adopt(in);
   overtakers_.clear();
+  const auto& vehicles = fleet_.vehicles();
+  for (std::size_t i = 0; i < vehicles.size(); ++i) {
+    if (overtaking(vehicles[i])) overtakers_.push_back(i);
+  }
   const int into_period = static_cast<int>(in.step % static_cast<Step>(steps_per_plan_));
   const bool planning = into_period == 0;
-  const bool someone_overtakes = std::any_of(fleet_.vehicles().begin(), fleet_.vehicles().end(),
-                                             [&](const Vehicle& v) { return overtaking(v); });
+  const bool someone_overtakes = !overtakers_.empty();
   if (someone_overtakes) ++counters_.overtaking_steps;
   if (planning || someone_overtakes || !alert_.empty()) perceive(in);
   if (planning || !alert_.empty()) {
@@ -96,11 +100,6 @@ bool MesoCore::starts_overtaking(Vehicle& v, double desired_speed_mps) {
 
 void MesoCore::drive_overtakers() {
   auto& vehicles = fleet_.vehicles();
-  for (std::size_t i = 0; i < vehicles.size(); ++i) {
-    if (overtaking(vehicles[i])) overtakers_.push_back(i);
-  }
-  std::sort(overtakers_.begin(), overtakers_.end());
-  overtakers_.erase(std::unique(overtakers_.begin(), overtakers_.end()), overtakers_.end());
   // Every decision from the same snapshot first, then commit, as micro does.
   std::vector<Decision> decisions;
   decisions.reserve(overtakers_.size());
@@ -177,6 +176,7 @@ bool MesoCore::calls_for_alert(const Vehicle& v, const Ahead& ahead, const MesoS
 void MesoCore::plan(bool everyone, int steps_left) {
   const PlanHorizon horizon{scenario_.step_s, steps_left};
   std::vector<VehicleId> still_alert;
+  std::vector<std::size_t> starting;  // begin a pass now: driven by micro's model from this step
   // Every plan from the same snapshot first, then commit (gaps do not see this step's plans).
   struct Plan {
     std::size_t index;
@@ -194,7 +194,7 @@ void MesoCore::plan(bool everyone, int steps_left) {
     const double desired = actor_desired_speed_mps(
         v, env_.speeds().desired_speed_mps(v.direction, v.s_m, v.driver.desired_speed_mps(), v.driver.basic_median_mps()));
     if (everyone && starts_overtaking(v, desired)) {
-      overtakers_.push_back(i);
+      starting.push_back(i);
       continue;
     }
     const bool call_off = calls_off_change(v, index_, lane_rules_);
@@ -207,6 +207,11 @@ void MesoCore::plan(bool everyone, int steps_left) {
     const std::optional<int> lane = may_change ? choose_lane(v, index_, ahead.gap_m, lane_rules_, must) : std::nullopt;
     if (lane && must >= 0) ++counters_.mandatory_lane_changes;
     plans.push_back({i, ms, lane, call_off});
+  }
+  if (!starting.empty()) {
+    const std::vector<std::size_t> passing = std::move(overtakers_);
+    overtakers_.clear();
+    std::merge(passing.begin(), passing.end(), starting.begin(), starting.end(), std::back_inserter(overtakers_));
   }
   counters_.plans += plans.size();
   counters_.alert_plans += everyone ? 0 : plans.size();

@@ -6,9 +6,9 @@
 //             their actors
 //   perceive  the lane index from the fleet, the rest of the world at step-1 and the ego (only
 //             at a step that plans)
-//   plan      every vehicle once per update period (`update_period_s`), and an alert one (its leader brakes hard, an
-//             oncoming vehicle ahead, an emergency) at every step, all from the same
-//             snapshot, then committed: its speed ramp over the next period from its gap and its
+//   plan      every vehicle once per update period (`update_period_s`), and an alert one (its
+//             leader brakes hard, an oncoming vehicle ahead, an emergency) at every step, all
+//             from the same snapshot, then committed: its speed ramp over the next period from its gap and its
 //             desired speed at its place (meso_model.hpp), and its lane choice (meso_lanes.hpp).
 //             Between plans a vehicle keeps its ramp (one that just joined, the acceleration it
 //             came with) and only a lane change just begun is checked, against the vehicles that

@@ -1,5 +1,7 @@
 #include "meso/core/meso_lanes.hpp"
 
+#include "traffic/fleet.hpp"
+
 namespace entourage::meso {
 
 namespace {
@@ -13,8 +15,7 @@ bool room_behind(const Vehicle& v, const Occupant& leader, double ahead_factor) 
 
 // Room for `follower` behind `v`: the follower keeps its safe gap (at its speed, `v`'s time gap).
 bool room_ahead_of(const Vehicle& v, const Occupant& follower) {
-  const Occupant self{v.id, v.progress_m(), v.speed_mps, 0.0, v.length_m};
-  return gap_between(self, follower.progress_m, follower.length_m) >=
+  return gap_between(as_occupant(v), follower.progress_m, follower.length_m) >=
          safe_gap_m(v.driver.car_following.idm, follower.speed_mps);
 }
 
@@ -76,7 +77,7 @@ bool crowds_change(const Vehicle& v, const Vehicle& other, const LaneRules& rule
   if (other.id == v.id || other.direction != v.direction || !just_begun(v, rules)) return false;
   const int to = v.lane_change.to_lane;
   if (other.lane != to && other.target_lane() != to) return false;
-  const Occupant o{other.id, other.progress_m(), other.speed_mps, other.accel_mps2, other.length_m};
+  const Occupant o = as_occupant(other);
   return other.progress_m() >= v.progress_m() ? !room_behind(v, o, 1.0) : !room_ahead_of(v, o);
 }
 
