@@ -194,6 +194,21 @@ TEST_F(CutterOnItsWay, AnActorHeldUpPassesOnlyByALaneInWhichItIsNotHeldUpAsWell)
   EXPECT_EQ(pass.lane, 0);
 }
 
+TEST_F(CutterOnItsWay, AnActorAheadOfTheEgoDoesNotPassInTheEgosLane) {
+  // The cutter 30 m ahead of the ego in the left lane, a slower car 60 m ahead of it there, the
+  // right lane free but for the ego behind. Passing on the right would put the cutter in front of
+  // the ego, where it would soon slow to its start's pace and hold the ego up: it stays.
+  const ObservedVehicle ahead = vehicle(1, 2030.0, 26.0, 1);
+  const std::vector<ObservedVehicle> world{ahead, vehicle(2, 2090.0, 23.0, 1)};
+  const TransportCommand c = transport(slot, ahead, 40.0, -1.0, 0.1, world, ego, lanes, cfg, cfg.transport_rate_mps2, 0.0);
+  EXPECT_EQ(c.lane, 1);
+  // The same with its start in the ego's lane (a lead vehicle): that lane is its own, it passes.
+  const Slot lead_slot{Direction::kForward, 0, 3060.0, 26.0};
+  const ObservedVehicle lead = vehicle(1, 2030.0, 26.0, 0);
+  const std::vector<ObservedVehicle> held{lead, vehicle(2, 2090.0, 23.0, 0)};
+  EXPECT_EQ(transport(lead_slot, lead, 40.0, -1.0, 0.1, held, ego, lanes, cfg, cfg.transport_rate_mps2, 0.0).lane, 1);
+}
+
 TEST_F(CutterOnItsWay, AVehicleHoldingAnActorUpOnItsWayMakesWayToALaneClearOfTheZones) {
   // The ego's lane is a zone from 3 to 60 m ahead of it at the start (40 s from now, at 3000 m).
   const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 3003.0, 3060.0}};

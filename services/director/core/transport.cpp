@@ -48,6 +48,16 @@ bool holds_up(const ObservedVehicle& v, Direction direction, int lane, double ta
   return q > dir * actor.s_m && q < hold_up_horizon_p(actor, cmd_mps, target_p) && v.speed_mps < cmd_mps - kHoldsUp_mps;
 }
 
+// Would an actor that passes in `lane` be ahead of the ego there? An actor whose start is in
+// another lane then holds the ego up: it soon slows to the pace of its start beside the ego, and
+// the way back to its own lane is often blocked by the very traffic it passes (cut-in, traced:
+// the cutter passed a slower car on the ego's side, waited there for the ego, and both slowed
+// from 29 to 13 m/s). The ego's lane is a passing lane only behind the ego.
+bool ahead_of_ego_in(int lane, const ObservedVehicle& actor, const EgoObservation& ego) {
+  const int dir = sign(actor.direction);
+  return occupies(ego, actor.direction, lane) && dir * actor.s_m > dir * ego.s_m;
+}
+
 // Is a vehicle that must get to `target_p` (progress along its direction) in `lane` held up there
 // by something it must get past (a vehicle that holds it up, or the ego it must pass)?
 bool held_up(Direction direction, int lane, double target_p, const ObservedVehicle& actor, double cmd_mps,
@@ -94,7 +104,10 @@ TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, doubl
   if (held_up(slot.direction, slot.lane, dir * slot.s_m, actor, c.speed_mps, world, ego)) {
     const int pass = actor.lane == slot.lane ? passing_lane(slot.lane, lanes, slot.direction) : actor.lane;
     // Only by a lane in which it is not held up as well (the ego, or a queue, ahead of it there).
-    if (!held_up(slot.direction, pass, dir * slot.s_m, actor, c.speed_mps, world, ego)) c.lane = pass;
+    if (!held_up(slot.direction, pass, dir * slot.s_m, actor, c.speed_mps, world, ego) &&
+        (pass == slot.lane || !ahead_of_ego_in(pass, actor, ego))) {
+      c.lane = pass;
+    }
   }
   return c;
 }
