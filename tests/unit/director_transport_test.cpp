@@ -175,6 +175,31 @@ TEST_F(EgoInTheRightLaneOfTwo, TheEgosLeaderInAZoneMovesAheadInTheActorsLaneOnly
   }
 }
 
+TEST_F(EgoInTheRightLaneOfTwo, AVehicleInAnActorsLaneIsClearedOnlyOnItsOwnSideOfTheActor) {
+  // The cutter's room in the left lane from 3008 to 3046 m at the start, 40 s from now (ego then at
+  // 3000 m, the ego's lane a zone from 3 to 60 m). A car in the left lane would stand in the room:
+  // falling back behind it is the smaller change of speed (27.45 against 28.95 m/s).
+  const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 3003.0, 3060.0},
+                                       {Direction::kForward, 1, 3008.0, 3046.0}};
+  const std::vector<int> role_lanes{1};
+  const ObservedVehicle car = vehicle(1, 2040.0, 25.0, 1);
+  auto clear = [&](std::vector<ActorPlace> actors) {
+    return clear_out(car, ClearingSituation{zones, 40.0, ego, 3000.0, role_lanes, lanes, cfg, std::move(actors)});
+  };
+  const double behind_mps = (3008.0 - 2.25 - 5.0 - 2040.0) / 35.0;
+  const double ahead_mps = (3046.0 + 2.25 + 5.0 - 2040.0) / 35.0;
+  ASSERT_TRUE(clear({}).has_value());
+  EXPECT_NEAR(clear({})->speed_mps, behind_mps, 1e-9);
+  // With the cutter behind it in that lane, falling back would take the cutter back with it: ahead.
+  const auto ahead = clear({{1, 2010.0, 25.0}});
+  ASSERT_TRUE(ahead.has_value());
+  EXPECT_NEAR(ahead->speed_mps, ahead_mps, 1e-9);
+  EXPECT_EQ(ahead->lane, 1);
+  // With the cutter ahead of it, it stays behind; an actor in the other lane does not count.
+  EXPECT_NEAR(clear({{1, 2070.0, 25.0}})->speed_mps, behind_mps, 1e-9);
+  EXPECT_NEAR(clear({{0, 2010.0, 25.0}})->speed_mps, behind_mps, 1e-9);
+}
+
 // A cutter on its way: its slot in the left lane of two, 12 m ahead of the ego at the start, 40 s
 // from now; the actor 100 m behind the ego in that lane, the ego in the right lane.
 struct CutterOnItsWay : EgoInTheRightLaneOfTwo {

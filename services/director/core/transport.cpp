@@ -255,6 +255,16 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
     if (!with_ego) return true;
     return ahead_of_ego ? target_p > ego_then_p + room_p : target_p < ego_then_p - room_p;
   };
+  // Nor can it get past an actor of its lane, nor that actor past it: a vehicle ahead of one is
+  // only sent ahead of the zone, one behind only behind it. (Sent behind the room a cutter needs,
+  // the car just ahead of the cutter in its lane slowed to fall back and took the cutter back with
+  // it, 27 m behind its start: cut-in, seed 61.)
+  const auto actor_ahead_or_behind = [&](bool ahead) {
+    return std::any_of(at.actors.begin(), at.actors.end(),
+                       [&](const ActorPlace& a) { return a.lane == v.lane && (dir * a.s_m > p) == ahead; });
+  };
+  const bool behind_an_actor = actor_ahead_or_behind(true);
+  const bool ahead_of_an_actor = actor_ahead_or_behind(false);
   // When neither way is within the band, the edge of the band towards the first way that keeps
   // the order: as far out as it gets (it was left with its last command before, which had asked
   // for too little).
@@ -265,7 +275,8 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
   std::optional<Clearance> best;
   std::optional<Clearance> closest;
   for (double target_p : {ahead_p, behind_p}) {
-    if (!keeps_order(target_p)) continue;
+    const bool ahead = target_p == ahead_p;
+    if (!keeps_order(target_p) || (ahead ? behind_an_actor : ahead_of_an_actor)) continue;
     const double speed = (target_p - p) / t_plan;
     if (speed < low || speed > high) {
       if (!closest) closest = Clearance{std::clamp(speed, low, high), v.lane};
