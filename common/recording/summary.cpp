@@ -248,6 +248,7 @@ RunSummary summarize(const Tables& t, const ScenarioConfig& sc, double spacing) 
   s.past_ego = measure_past_ego(t, sc);
   s.past_ego_predicted = predict_past_ego(t, sc);
   s.manoeuvres = count_manoeuvres(t, sc);
+  s.transitions = measure_transitions(t, sc.step_s);
   if (!t.ego.empty()) {
     double total = 0.0;
     for (const auto& e : t.ego) total += e.speed_mps;

@@ -26,6 +26,7 @@
 
 #include "recording/recording.hpp"
 #include "recording/tables.hpp"
+#include "recording/transitions.hpp"
 #include "scenario/config.hpp"
 
 namespace entourage::recording {
@@ -110,6 +111,7 @@ struct RunSummary {
   PastTheEgo past_ego;
   PastTheEgoPrediction past_ego_predicted;
   Manoeuvres manoeuvres;
+  Transitions transitions;  // handoffs between micro and meso as driven (transitions.hpp)
   double ego_mean_speed_mps = 0.0;
   double ego_distance_m = 0.0;
 };

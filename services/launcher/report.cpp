@@ -113,6 +113,15 @@ bool print_report(const ReportInput& in, const recording::Tables& tables, std::o
         << " vehicles)";
   }
   out << "\n";
+  const auto& micro_in = s.transitions.into_micro;
+  const auto& meso_in = s.transitions.into_meso;
+  out << "  handovers meso to micro: " << micro_in.handoffs << "; largest deceleration in the first "
+      << f1(recording::kIntoMicroWindow_s) << " s in micro: median " << f2(micro_in.median_decel_mps2) << ", 95th percentile "
+      << f2(micro_in.p95_decel_mps2) << ", max " << f2(micro_in.max_decel_mps2) << " m/s2, " << micro_in.hard << " above "
+      << f1(recording::kHardBorderDecel_mps2) << " m/s2\n";
+  out << "  handovers micro to meso: " << meso_in.handoffs << "; lane kept " << meso_in.lane_kept << ", speed against micro's "
+      << "last acceleration: mean " << f2(meso_in.mean_speed_jump_mps) << ", max " << f2(meso_in.max_speed_jump_mps)
+      << " m/s\n";
   if (in.realtime && !in.latencies_ms.empty()) {
     out << "  ego state to world state: median " << f1(percentile(in.latencies_ms, 0.5)) << " ms, 99th percentile "
         << f1(percentile(in.latencies_ms, 0.99)) << " ms, max " << f1(percentile(in.latencies_ms, 1.0)) << " ms over "

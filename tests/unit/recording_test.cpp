@@ -16,6 +16,7 @@
 #include "traffic/observed_stream.hpp"
 #include "recording/recording.hpp"
 #include "recording/tables.hpp"
+#include "recording/transitions.hpp"
 
 namespace entourage::recording {
 namespace {
@@ -403,6 +404,69 @@ TEST(FlowError, BunchedArrivalsGiveTheBatchMeansLargerError) {
   const FlowMeasurement bunched = measure_flow(standing_ego_passed_by(60), sc, 1, 25.0);
   EXPECT_NEAR(bunched.measured_veh_per_h, even.measured_veh_per_h, 1.0);
   EXPECT_GT(bunched.standard_error_veh_per_h, 1.3 * even.standard_error_veh_per_h);
+}
+
+// --- Transitions between micro and meso
+
+// Rows of vehicle `id` from `first` to `last` step: owned by `owner`, in `lane`, at `speed_mps`
+// and `accel_mps2` (positions do not matter here).
+void drive(Tables& t, std::uint32_t id, std::uint64_t first, std::uint64_t last, const char* owner, int lane,
+           double speed_mps, double accel_mps2, const char* control = "autonomous") {
+  for (std::uint64_t k = first; k <= last; ++k) {
+    VehicleRow r{k, 0.1 * k, id, owner, "inner", 1, lane, lane, 1000.0, 0, 0, 0, 0, speed_mps, accel_mps2, 4.5, 1.8, "car"};
+    r.control = control;
+    t.vehicles.push_back(r);
+  }
+}
+
+HandoffRow border(std::uint64_t step, std::uint32_t id, const char* from, const char* to_role) {
+  return {step, 0.1 * step, id, 2, from, to_role, "inner", "border", 0, 1000.0, 30.0};
+}
+
+TEST(Transitions, AVehicleIntoMicroCountsItsHardestBrakingOverItsFirstThreeSecondsThere) {
+  Tables t;
+  // Vehicle 1: handed to micro at step 10; it brakes at 1, 4, then 2 m/s^2, and at 8 m/s^2 only
+  // after its first 3 s (30 steps) in micro: 4 counts.
+  drive(t, 1, 0, 10, "meso", 0, 30.0, 0.0);
+  drive(t, 1, 11, 12, "micro", 0, 30.0, -1.0);
+  drive(t, 1, 13, 13, "micro", 0, 30.0, -4.0);
+  drive(t, 1, 14, 40, "micro", 0, 30.0, -2.0);
+  drive(t, 1, 41, 45, "micro", 0, 30.0, -8.0);
+  // Vehicle 2: calm. Vehicle 3: under the director's command (a script may brake it): left out.
+  drive(t, 2, 0, 10, "meso", 0, 30.0, 0.0);
+  drive(t, 2, 11, 20, "micro", 0, 30.0, -0.5);
+  drive(t, 3, 0, 10, "meso", 0, 30.0, 0.0);
+  drive(t, 3, 11, 20, "micro", 0, 30.0, -9.0, "controlled");
+  t.handoffs = {border(10, 1, "meso", "micro"), border(10, 2, "meso-front", "micro"), border(10, 3, "meso", "micro")};
+  sort_rows(t);
+  const IntoMicro m = measure_transitions(t, 0.1).into_micro;
+  EXPECT_EQ(m.handoffs, 2U);
+  EXPECT_DOUBLE_EQ(m.max_decel_mps2, 4.0);
+  EXPECT_DOUBLE_EQ(m.median_decel_mps2, 0.5);
+  EXPECT_EQ(m.hard, 1U);
+}
+
+TEST(Transitions, AVehicleIntoMesoKeepsItsLaneAndSpeed) {
+  Tables t;
+  // Vehicle 1: micro's last row at 30 m/s accelerating at 1 m/s^2, meso's first at 30.1 m/s in
+  // the same lane: no jump. Vehicle 2: moving from lane 0 to lane 1 in micro, in lane 1 in meso,
+  // 2 m/s slower than micro left it: the lane is kept, the speed jumps.
+  drive(t, 1, 0, 10, "micro", 0, 30.0, 1.0);
+  drive(t, 1, 11, 15, "meso", 0, 30.1, 0.0);
+  drive(t, 2, 0, 10, "micro", 0, 25.0, 0.0);
+  for (VehicleRow& r : t.vehicles) {
+    if (r.id == 2) r.target_lane = 1;
+  }
+  drive(t, 2, 11, 15, "meso-rear", 1, 23.0, 0.0);
+  // Vehicle 3 goes to micro, not meso: not counted here.
+  drive(t, 3, 0, 10, "micro", 0, 25.0, 0.0);
+  t.handoffs = {border(10, 1, "micro", "meso"), border(10, 2, "micro", "meso"), border(10, 3, "meso", "micro")};
+  sort_rows(t);
+  const IntoMeso m = measure_transitions(t, 0.1).into_meso;
+  EXPECT_EQ(m.handoffs, 2U);
+  EXPECT_EQ(m.lane_kept, 2U);
+  EXPECT_NEAR(m.max_speed_jump_mps, 2.0, 1e-9);
+  EXPECT_NEAR(m.mean_speed_jump_mps, 1.0, 1e-9);
 }
 
 }  // namespace
