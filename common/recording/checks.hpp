@@ -7,7 +7,9 @@
 //                    an owner's last recorded step may be cut short by the recorder stopping)
 //   no_overlap       no two vehicles (ego included) of a direction overlap (length x width boxes)
 //   ego_interacts    the ego is the leader of a micro vehicle in some step (the ego is a vehicle
-//                    like any other to micro). How often a micro vehicle is the ego's leader is
+//                    like any other to micro), unless no vehicle was ever right behind it in the
+//                    inner region (nobody caught up: rural seed 2's five minutes, where the
+//                    nearest follower stayed in the outer region). How often a micro vehicle is the ego's leader is
 //                    reported too, but not required: an ego slower than everything on the road
 //                    (rural_ego_slow) may have nobody ahead of it in the inner region for minutes
 

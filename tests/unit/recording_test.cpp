@@ -285,6 +285,21 @@ TEST(Checks, TheEgoMustLeadMicroVehicles) {
   EXPECT_FALSE(find(check_invariants(t, 4.6, 1.8), "ego_interacts").passed);
 }
 
+TEST(Checks, AnEgoNobodyCaughtUpWithHasNothingToCheck) {
+  // The vehicle behind the ego stays in the outer region, meso's, for the whole drive: no vehicle
+  // was ever right behind it in the inner region, so whether micro follows it cannot be seen.
+  Tables t = clean_tables();
+  for (auto& v : t.vehicles) {
+    if (v.id != 1) continue;
+    v.owner = "meso";
+    v.region = "outer_rear";
+    v.s_m = 700.0;
+  }
+  const CheckResult c = find(check_invariants(t, 4.6, 1.8), "ego_interacts");
+  EXPECT_TRUE(c.passed);
+  EXPECT_NE(c.detail.find("no vehicle drove behind it in the inner region"), std::string::npos) << c.detail;
+}
+
 TEST(Checks, AnEgoWithNobodyAheadOfItStillInteracts) {
   // Only vehicles behind the ego in its lane: it leads micro vehicles and follows none (an ego
   // slower than the whole stream, with the road ahead of it empty).
