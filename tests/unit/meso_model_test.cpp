@@ -126,10 +126,35 @@ TEST(MesoModel, APlanIsARampAtTheDriversRate) {
 }
 
 TEST(MesoModel, AStandingObstacleIsBrakedForOnlyWhenComfortableBrakingNoLongerSuffices) {
+  // A lane's end, and an oncoming overtaker expected back in its lane: not vehicles to follow.
   Case c(25.0, 33.0);
   const double stopping_m = 25.0 * 25.0 / (2.0 * c.p().comfort_decel_mps2) + c.p().min_gap_m;
-  EXPECT_LT(c.next({stopping_m - 10.0, 0.0}).speed_mps, 25.0);
-  EXPECT_NEAR(c.next({30.0, 0.0}).speed_mps, 25.0 - c.v.driver.max_decel_mps2 * kDt, 1e-9);
+  for (const bool oncoming : {false, true}) {
+    const Ahead far{stopping_m + 10.0, 0.0, 0.0, oncoming, !oncoming};
+    const Ahead near{stopping_m - 10.0, 0.0, 0.0, oncoming, !oncoming};
+    const Ahead close{30.0, 0.0, 0.0, oncoming, !oncoming};
+    EXPECT_GE(c.next(far).speed_mps, 25.0 - 1e-9);
+    EXPECT_LT(c.next(near).speed_mps, 25.0);
+    EXPECT_NEAR(c.next(close).speed_mps, 25.0 - c.v.driver.max_decel_mps2 * kDt, 1e-9);
+  }
+}
+
+TEST(MesoModel, ClosingInTooFastItBrakesAsItsOwnModelDoes) {
+  // 35 m/s, 70 m behind a vehicle at 26 m/s: its equilibrium at that gap is above its speed and it
+  // could still brake comfortably to the leader's bumper, but its car-following model brakes hard
+  // (the approach rate): planned over a second, meso brakes as hard. Far behind (200 m) the model
+  // brakes less than comfortably and the relaxation alone decides, as before.
+  Case c(35.0, 40.0);
+  const double dt = 1.0;
+  auto plan = [&](double gap_m) { return next_speed(c.v, c.eq, {gap_m, 26.0}, 40.0, PlanHorizon{kDt, 10}); };
+  const LeaderView leader{70.0, 26.0, 0.0};
+  const double model = car_following_accel_mps2(c.v.driver.car_following, 35.0, &leader);
+  ASSERT_LT(model, -c.p().comfort_decel_mps2);
+  EXPECT_NEAR(plan(70.0).accel_mps2, std::max(model, -c.v.driver.max_decel_mps2), 1e-9);
+  EXPECT_NEAR(plan(70.0).speed_mps, 35.0 + std::max(model, -c.v.driver.max_decel_mps2) * dt, 1e-9);
+  const LeaderView far{200.0, 26.0, 0.0};
+  ASSERT_GT(car_following_accel_mps2(c.v.driver.car_following, 35.0, &far), -c.p().comfort_decel_mps2);
+  EXPECT_GE(plan(200.0).accel_mps2, -c.p().comfort_decel_mps2 - 1e-9);
 }
 
 }  // namespace

@@ -154,7 +154,7 @@ Ahead MesoCore::ahead_of(const Vehicle& v, bool own_lane_only) const {
   }
   const double to_closure = env_.ahead().distance_to_closure_m(v.direction, v.lane, v.s_m) - 0.5 * v.length_m;
   if (to_closure < env_.rules().mandatory_lookahead_m && (out.gap_m < 0.0 || to_closure < out.gap_m)) {
-    out = {std::max(0.0, to_closure), 0.0};  // the closed lane ends there: a standing obstacle
+    out = {std::max(0.0, to_closure), 0.0, 0.0, false, true};  // the closed lane ends there: a standing obstacle
   }
   return out;
 }

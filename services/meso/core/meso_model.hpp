@@ -11,8 +11,12 @@
 //                                                     one when T is one step; v0_local: speed
 //                                                     adaptation, limits ahead)
 //   v_relax = v + clamp((v_eq - v) (1 - exp(-T / tau)), -b T, a T)
+//   v_model = v + max(a_cf, -b_max) T   if a_cf < -b, else unbounded   (a_cf: the driver's own
+//                                                     car-following model's acceleration now
+//                                                     behind a vehicle of its direction: closing
+//                                                     in too fast, it brakes as micro would)
 //   v_safe  = v_leader + sqrt(2 b (gap - s0))         (can still brake comfortably to the leader)
-//   v_next  = v_relax                    if v_relax <= v_safe
+//   v_next  = min(v_relax, v_model)      if that is <= v_safe
 //           = max(v_safe, v - b_max T)   otherwise (brakes harder, up to the vehicle's limit)
 //   a       = min((v_next - v) / T, a_guard)         a_guard: the highest rate whose steps stay
 //                                                     s_floor behind the leader at every step of
@@ -30,6 +34,7 @@
 #include <cmath>
 #include <limits>
 
+#include "behaviour/car_following.hpp"
 #include "meso/core/equilibrium.hpp"
 #include "traffic/vehicle.hpp"
 
@@ -56,6 +61,7 @@ struct Ahead {
   double leader_speed_mps = 0.0;
   double leader_accel_mps2 = 0.0;
   bool oncoming = false;  // the obstacle is a vehicle of the other direction in the lane
+  bool lane_end = false;  // the obstacle is where its lane is closed
 };
 
 struct MesoSpeed {
@@ -102,6 +108,18 @@ inline MesoSpeed next_speed(const Vehicle& v, const EquilibriumSpeed& eq, const 
   const double change = std::clamp((target - v.speed_mps) * relaxed, -p.comfort_decel_mps2 * t, p.max_accel_mps2 * t);
   double next = v.speed_mps + change;
   if (led) {
+    // Closing in faster than its own model would brake for comfortably: it brakes as that model
+    // does (a meso vehicle at 35 m/s 70 m behind a micro one at 26 m/s kept its speed, its
+    // equilibrium at that gap being above it, and micro's model braked at 9 m/s^2 at the border).
+    // (Not for an oncoming overtaker, expected back in its lane, nor a lane's end, left by a lane
+    // change: those are braked for only when comfortable braking no longer suffices.)
+    const LeaderView leader{ahead.gap_m, ahead.leader_speed_mps, ahead.leader_accel_mps2};
+    const bool a_vehicle = !ahead.oncoming && !ahead.lane_end;
+    const double model_accel =
+        a_vehicle ? car_following_accel_mps2(v.driver.car_following, v.speed_mps, &leader) : 0.0;
+    if (model_accel < -p.comfort_decel_mps2) {
+      next = std::min(next, v.speed_mps + std::max(model_accel, -v.driver.max_decel_mps2) * t);
+    }
     const double room = std::max(0.0, ahead.gap_m - p.min_gap_m);
     const double safe = ahead.leader_speed_mps + std::sqrt(2.0 * p.comfort_decel_mps2 * room);
     if (next > safe) next = std::max(safe, v.speed_mps - v.driver.max_decel_mps2 * t);
