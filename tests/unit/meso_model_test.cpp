@@ -129,10 +129,10 @@ TEST(MesoModel, AStandingObstacleIsBrakedForOnlyWhenComfortableBrakingNoLongerSu
   // A lane's end, and an oncoming overtaker expected back in its lane: not vehicles to follow.
   Case c(25.0, 33.0);
   const double stopping_m = 25.0 * 25.0 / (2.0 * c.p().comfort_decel_mps2) + c.p().min_gap_m;
-  for (const bool oncoming : {false, true}) {
-    const Ahead far{stopping_m + 10.0, 0.0, 0.0, oncoming, !oncoming};
-    const Ahead near{stopping_m - 10.0, 0.0, 0.0, oncoming, !oncoming};
-    const Ahead close{30.0, 0.0, 0.0, oncoming, !oncoming};
+  for (const Obstacle obstacle : {Obstacle::kLaneEnd, Obstacle::kOncoming}) {
+    const Ahead far{stopping_m + 10.0, 0.0, 0.0, obstacle};
+    const Ahead near{stopping_m - 10.0, 0.0, 0.0, obstacle};
+    const Ahead close{30.0, 0.0, 0.0, obstacle};
     EXPECT_GE(c.next(far).speed_mps, 25.0 - 1e-9);
     EXPECT_LT(c.next(near).speed_mps, 25.0);
     EXPECT_NEAR(c.next(close).speed_mps, 25.0 - c.v.driver.max_decel_mps2 * kDt, 1e-9);

@@ -150,11 +150,11 @@ Ahead MesoCore::ahead_of(const Vehicle& v, bool own_lane_only) const {
   // driver who expects the overtaker to pull back in (micro's overtakers plan on that).
   if (const Occupant* o = index_.oncoming(v.direction, v.lane, v.progress_m())) {
     const double gap = std::max(0.0, oncoming_gap(*o, v.progress_m(), v.length_m));
-    if (out.gap_m < 0.0 || gap < out.gap_m) out = {gap, 0.0, 0.0, true};
+    if (out.gap_m < 0.0 || gap < out.gap_m) out = {gap, 0.0, 0.0, Obstacle::kOncoming};
   }
   const double to_closure = env_.ahead().distance_to_closure_m(v.direction, v.lane, v.s_m) - 0.5 * v.length_m;
   if (to_closure < env_.rules().mandatory_lookahead_m && (out.gap_m < 0.0 || to_closure < out.gap_m)) {
-    out = {std::max(0.0, to_closure), 0.0, 0.0, false, true};  // the closed lane ends there: a standing obstacle
+    out = {std::max(0.0, to_closure), 0.0, 0.0, Obstacle::kLaneEnd};  // a standing obstacle
   }
   return out;
 }
@@ -170,7 +170,7 @@ bool MesoCore::alert(VehicleId id) const { return std::binary_search(alert_.begi
 bool MesoCore::calls_for_alert(const Vehicle& v, const Ahead& ahead, const MesoSpeed& plan) {
   const bool leader_brakes_hard =
       ahead.gap_m >= 0.0 && ahead.leader_accel_mps2 < -v.driver.car_following.idm.comfort_decel_mps2;
-  return plan.emergency || ahead.oncoming || leader_brakes_hard;
+  return plan.emergency || ahead.obstacle == Obstacle::kOncoming || leader_brakes_hard;
 }
 
 void MesoCore::plan(bool everyone, int steps_left) {

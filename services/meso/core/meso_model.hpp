@@ -31,6 +31,7 @@
 // vehicle never reaches its leader. Lane choice: meso_lanes.hpp.
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 
@@ -56,12 +57,16 @@ struct PlanHorizon {
   double length_s() const { return dt_s * steps; }
 };
 
+// What a vehicle has ahead of it: a vehicle of its direction in its lane (its leader), a vehicle
+// of the other direction in its lane (an overtaker that has not returned yet), or the end of its
+// lane (a closure).
+enum class Obstacle : std::uint8_t { kLeader, kOncoming, kLaneEnd };
+
 struct Ahead {
   double gap_m = -1.0;  // < 0: no leader
   double leader_speed_mps = 0.0;
   double leader_accel_mps2 = 0.0;
-  bool oncoming = false;  // the obstacle is a vehicle of the other direction in the lane
-  bool lane_end = false;  // the obstacle is where its lane is closed
+  Obstacle obstacle = Obstacle::kLeader;
 };
 
 struct MesoSpeed {
@@ -114,9 +119,9 @@ inline MesoSpeed next_speed(const Vehicle& v, const EquilibriumSpeed& eq, const 
     // (Not for an oncoming overtaker, expected back in its lane, nor a lane's end, left by a lane
     // change: those are braked for only when comfortable braking no longer suffices.)
     const LeaderView leader{ahead.gap_m, ahead.leader_speed_mps, ahead.leader_accel_mps2};
-    const bool a_vehicle = !ahead.oncoming && !ahead.lane_end;
-    const double model_accel =
-        a_vehicle ? car_following_accel_mps2(v.driver.car_following, v.speed_mps, &leader) : 0.0;
+    const double model_accel = ahead.obstacle == Obstacle::kLeader
+                                   ? car_following_accel_mps2(v.driver.car_following, v.speed_mps, &leader)
+                                   : 0.0;
     if (model_accel < -p.comfort_decel_mps2) {
       next = std::min(next, v.speed_mps + std::max(model_accel, -v.driver.max_decel_mps2) * t);
     }
