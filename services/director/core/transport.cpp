@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace entourage::director {
 
@@ -274,9 +275,10 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
   // made the plays fail more often: services/director/README.md, Pacing.)
   std::optional<Clearance> best;
   std::optional<Clearance> closest;
-  for (double target_p : {ahead_p, behind_p}) {
-    const bool ahead = target_p == ahead_p;
-    if (!keeps_order(target_p) || (ahead ? behind_an_actor : ahead_of_an_actor)) continue;
+  // Each way with whether it would pass an actor of its lane.
+  const std::pair<double, bool> ways[] = {{ahead_p, behind_an_actor}, {behind_p, ahead_of_an_actor}};
+  for (const auto& [target_p, passes_an_actor] : ways) {
+    if (passes_an_actor || !keeps_order(target_p)) continue;
     const double speed = (target_p - p) / t_plan;
     if (speed < low || speed > high) {
       if (!closest) closest = Clearance{std::clamp(speed, low, high), v.lane};
