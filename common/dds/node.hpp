@@ -3,6 +3,7 @@
 // profile file, with typed writers and readers for Entourage's topics. Reader callbacks run on
 // Fast DDS's threads; a shell hands the samples to its main thread (see inbox.hpp).
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -45,6 +46,16 @@ class Writer {
   // RegionPublisher::publish).
   bool write(const Sample& s) const { return writer_->write(const_cast<Sample*>(&s)); }
   bool valid() const { return writer_ != nullptr; }
+  // Blocks until every matched reliable reader has acknowledged every sample written so far, or
+  // `timeout` has passed; true in the first case.
+  bool wait_for_acknowledgments(std::chrono::milliseconds timeout) const {
+    constexpr long long kMsPerS = 1000;
+    constexpr long long kNsPerMs = 1000000;
+    const long long ms = timeout.count();
+    const eprosima::fastrtps::Duration_t limit(static_cast<std::int32_t>(ms / kMsPerS),
+                                               static_cast<std::uint32_t>((ms % kMsPerS) * kNsPerMs));
+    return writer_->wait_for_acknowledgments(limit) == ReturnCode_t::RETCODE_OK;
+  }
 
  private:
   fdds::DataWriter* writer_ = nullptr;

@@ -3,6 +3,7 @@
 // The core is anything with `StepOutput step(const StepInput&)`, `fleet()` and `counters()`.
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -96,6 +97,11 @@ class RegionPublisher {
   }
 
   const std::vector<ObservedVehicle>& own() const { return own_; }
+  // True once every matched reader has acknowledged every state published so far (false after
+  // `timeout`).
+  bool states_acknowledged(std::chrono::milliseconds timeout) const {
+    return states_.wait_for_acknowledgments(timeout);
+  }
 
  private:
   ServiceId self_;
