@@ -199,6 +199,45 @@ TEST(Casting, NewVehiclesAreCreatedOutOfSightWithASafeGap) {
   EXPECT_GT(std::abs(moved->s_m - world[0].s_m), 4.5 + 5.0 + 1.5 * 25.0 - 1e-9);
 }
 
+TEST(Casting, ANewVehicleForASlotAheadOfTheEgoInItsLaneComesFromAheadRatherThanPastTheEgo) {
+  // A lead 40 m ahead of the ego in its lane at the start, the ego at 25 m/s in lane 0 of two, at
+  // 2000 m: the inner region ends 400 m ahead and 200 m behind, so a hidden place is at least
+  // 2450 m or at most 1750 m.
+  DirectorConfig cfg;
+  ScenarioConfig sc = testing::road_scenario(2, 0);
+  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
+  const WindowBounds w = WindowBounds::around(ego.s_m, sc.window);
+  const std::vector<ObservedVehicle> world;
+  auto slot_in = [](double time_s) {
+    Slot slot;
+    slot.lane = 0;
+    slot.s_m = 2000.0 + 25.0 * time_s + 40.0;
+    slot.speed_mps = 25.0;
+    return slot;
+  };
+  // 60 s to go: from behind it needs 29.83 m/s (4.83 above the start's speed), from ahead 18.17
+  // (6.83 below). From behind it would have to get past the ego and back into its lane ahead of
+  // it, as a lead created behind the ego failed to in traced runs (held behind the ego by the
+  // slower traffic of the other lane): it is created ahead.
+  const CastingSituation sixty{world, ego, 60.0, 2000.0 + 25.0 * 60.0, Lanes{2, 0}, {}};
+  const auto ahead = hidden_placement(slot_in(60.0), 4.5, sixty, w, cfg);
+  ASSERT_TRUE(ahead.has_value());
+  EXPECT_EQ(ahead->region, Region::kOuterFront);
+  EXPECT_NEAR(ahead->speed_mps, 1090.0 / 60.0, 1e-9);
+  // 40 s to go: from ahead it would need 14.75 m/s, outside the band; behind is the only place.
+  const CastingSituation forty{world, ego, 40.0, 2000.0 + 25.0 * 40.0, Lanes{2, 0}, {}};
+  const auto behind = hidden_placement(slot_in(40.0), 4.5, forty, w, cfg);
+  ASSERT_TRUE(behind.has_value());
+  EXPECT_EQ(behind->region, Region::kOuterRear);
+  // With the ego in the other lane the one from behind passes it beside its own lane: the smaller
+  // change of speed wins again.
+  const EgoObservation beside = testing::ego_at(0, 2000.0, 25.0, 1);
+  const CastingSituation passing{world, beside, 60.0, 2000.0 + 25.0 * 60.0, Lanes{2, 0}, {}};
+  const auto from_behind = hidden_placement(slot_in(60.0), 4.5, passing, w, cfg);
+  ASSERT_TRUE(from_behind.has_value());
+  EXPECT_EQ(from_behind->region, Region::kOuterRear);
+}
+
 TEST(Casting, AVehicleWhoseIdealPlaceIsBeyondTheWindowIsCreatedOnlyWithRoomLeftInTheBand) {
   // An oncoming car 200 m ahead of the ego at the start (3200 m, 22 m/s). With the ego at 2900 m
   // the window ends at 3900 m; created vehicles stay 30 m inside it.

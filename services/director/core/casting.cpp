@@ -38,6 +38,12 @@ bool type_fits(const PlayRoleConfig& role, const ObservedVehicle& v) {
 // unless it would have to change its speed by more than the transport band allows anyway.
 double creation_cost(const DirectorConfig& cfg) { return cfg.max_speed_offset_mps; }
 
+// A vehicle that must get past the ego to a slot in the ego's lane needs the ego's speed to be
+// left behind and a gap ahead of the ego to come back in, neither of which the director controls.
+bool passes_ego_into_its_lane(const Slot& slot, const Between& b, const CastingSituation& at) {
+  return b.ego && occupies(at.ego, slot.direction, slot.lane);
+}
+
 bool gap_is_free(const Slot& slot, double s_m, double length_m, double speed_mps, const CastingSituation& at) {
   const int dir = sign(slot.direction);
   const double p = dir * s_m;
@@ -94,9 +100,8 @@ double casting_cost(const Slot& slot, const PlayRoleConfig& role, const Observed
   // driver's to decide: its order must not depend on it).
   if (one_lane && (b.ego || b.to_pass > 0 || stuck_between(slot, v.s_m, v.id, at))) return kInf;
   const int lane_changes = std::abs(v.lane - slot.lane) + b.vehicles + (b.ego ? 1 : 0);
-  const bool passes_ego_into_its_lane = b.ego && occupies(at.ego, slot.direction, slot.lane);
   return std::abs(plan.cruise_mps - v.speed_mps) + cfg.lane_change_cost_mps * lane_changes +
-         (passes_ego_into_its_lane ? creation_cost(cfg) : 0.0);
+         (passes_ego_into_its_lane(slot, b, at) ? creation_cost(cfg) : 0.0);
 }
 
 std::vector<int> cast_roles(const std::vector<Slot>& slots, const std::vector<PlayRoleConfig>& role_configs,
@@ -152,12 +157,13 @@ std::optional<Placement> hidden_placement(const Slot& slot, double length_m, con
       const double needed = needed_speed_mps(slot, s, t);
       if (!band.contains(needed)) continue;
       if (beyond && std::abs(needed - slot.speed_mps) > kEarlyCreationSpeedShare * cfg.max_speed_offset_mps) continue;
-      if (one_lane) {
-        const Between b = between(slot, kNoVehicle, s, t, at.world, at.ego, at.ego_s_at_handover_m);
-        if (b.ego || b.to_pass > 0 || stuck_between(slot, s, kNoVehicle, at)) continue;
-      }
+      const Between b = between(slot, kNoVehicle, s, t, at.world, at.ego, at.ego_s_at_handover_m);
+      if (one_lane && (b.ego || b.to_pass > 0 || stuck_between(slot, s, kNoVehicle, at))) continue;
       if (!gap_is_free(slot, s, length_m, needed, at)) continue;
-      const double cost = std::abs(needed - slot.speed_mps);
+      // As for a vehicle of the traffic (casting_cost): getting past the ego into its lane costs a
+      // creation more.
+      const double cost =
+          std::abs(needed - slot.speed_mps) + (passes_ego_into_its_lane(slot, b, at) ? creation_cost(cfg) : 0.0);
       if (cost < best_cost) {
         best_cost = cost;
         best = Placement{s, needed, z.region};
