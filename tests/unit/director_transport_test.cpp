@@ -112,6 +112,25 @@ TEST(Transport, TheVehicleJustBehindInTheTargetLaneLetsAWaitingVehicleInUnlessTh
             nullptr);
 }
 
+TEST(Transport, BesideAStandingWaitingVehicleTheOneBehindLetsItIn) {
+  // Waiting at a standstill, with a queue standing in the target lane: vehicle 2 beside it, 2 m
+  // behind its centre, holding back below its speed would stand beside it for good (traced: a lead
+  // play's whole freeway stood for two minutes behind such a pair). Vehicle 3, queued 4.5 m behind
+  // it, lets it in; vehicle 2 drives on.
+  const ObservedVehicle waiting = vehicle(1, 1000.0, 0.0, 0);
+  const EgoObservation ego = testing::ego_at(0, 900.0, 0.0, 0);
+  const std::vector<ObservedVehicle> queue{waiting, vehicle(2, 998.0, 0.0, 1), vehicle(3, 991.0, 0.0, 1)};
+  const ObservedVehicle* f = follower_to_let_in(waiting, 1, queue, ego);
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(f->id, 3U);
+  // Moving at more than kLetIn_mps, the one beside falls behind by holding back: it lets it in.
+  ObservedVehicle moving = waiting;
+  moving.speed_mps = 5.0;
+  const ObservedVehicle* g = follower_to_let_in(moving, 1, {moving, vehicle(2, 998.0, 5.0, 1)}, ego);
+  ASSERT_NE(g, nullptr);
+  EXPECT_EQ(g->id, 2U);
+}
+
 TEST(Transport, ZonesOfALaneTooCloseToStandBetweenAreClearedAsOne) {
   const ZoneAtStart a{Direction::kForward, 1, 100.0, 120.0};
   const ZoneAtStart b{Direction::kForward, 1, 130.0, 160.0};  // 10 m beyond a: too close

@@ -126,9 +126,17 @@ void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
     if (lane < 0 || holds_back(id)) continue;
     const ObservedVehicle& v = *find(in, id);
     const ObservedVehicle* f = follower_to_let_in(v, lane, in.world, in.ego);
-    if (f == nullptr) continue;
-    const auto i = static_cast<std::size_t>(f - in.world.data());
     const auto before = letting_in_.find(id);
+    if (f == nullptr) {
+      // Beside a standing one, one that held back would stand there with it for good: it drives
+      // on as it likes (moving, one that fell back out of reach holds on until it has moved over).
+      if (before != letting_in_.end() && v.speed_mps < kLetIn_mps) {
+        stop_holding_back(before->second);
+        letting_in_.erase(before);
+      }
+      continue;
+    }
+    const auto i = static_cast<std::size_t>(f - in.world.data());
     const bool for_it_already = before != letting_in_.end() && before->second == f->id;
     if ((holds_back(f->id) && !for_it_already) || !(is_cleared(f->id) || in.available[i])) {
       continue;  // it lets in another, or it is an actor or another play's

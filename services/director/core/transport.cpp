@@ -311,11 +311,14 @@ const ObservedVehicle* follower_to_let_in(const ObservedVehicle& waiting, int la
                                           const std::vector<ObservedVehicle>& world, const EgoObservation& ego) {
   const double front_p = waiting.progress_m() + 0.5 * waiting.length_m;
   const double rear_p = waiting.progress_m() - 0.5 * waiting.length_m;
+  // Beside a waiting vehicle that (nearly) stands, one holding back kLetIn_mps below its speed
+  // stands too and never falls behind it: that one drives on, and the one behind it lets it in.
+  const bool standing = waiting.speed_mps < kLetIn_mps;
   const ObservedVehicle* nearest = nullptr;
   for (const ObservedVehicle& w : world) {
     if (w.id == waiting.id || w.direction != waiting.direction || !occupies(w, w.direction, lane)) continue;
     const double w_front_p = w.progress_m() + 0.5 * w.length_m;
-    if (w_front_p > front_p) continue;
+    if (w_front_p > front_p || (standing && w_front_p > rear_p)) continue;
     if (nearest == nullptr || w.progress_m() > nearest->progress_m()) nearest = &w;
   }
   if (nearest == nullptr) return nullptr;
@@ -324,7 +327,7 @@ const ObservedVehicle* follower_to_let_in(const ObservedVehicle& waiting, int la
     if (ego_p + 0.5 * ego.length_m <= front_p && ego_p > nearest->progress_m()) return nullptr;
   }
   const double gap_m = rear_p - (nearest->progress_m() + 0.5 * nearest->length_m);
-  return gap_m < kLetInReach_s * nearest->speed_mps ? nearest : nullptr;
+  return gap_m < std::max(kLetInReach_s * nearest->speed_mps, kLetInQueueReach_m) ? nearest : nullptr;
 }
 
 }  // namespace entourage::director
