@@ -405,6 +405,40 @@ TEST(PlayPhases, WaitingPreparingThenFailedWithTheReasonWhenNoActorCouldBeCast) 
   EXPECT_NE(out.reports[0].detail.find("lead: no actor"), std::string::npos) << out.reports[0].detail;
 }
 
+TEST(PlayPhases, ARoleBesideTheEgoIsCastForWhereItsWayLeadsFirst) {
+  // A cutter 12 m ahead of the ego in the lane to its left at the start (3 km, 40 s ahead at
+  // 25 m/s). Its way leads first to 50 m ahead of its start 20 s before the start
+  // (beside_wait_ahead_m, beside_approach_s): 2562 m in 20 s.
+  ScenarioConfig sc = testing::minimal_scenario();
+  PlayConfig play = lead_play();
+  play.roles[0].name = "cutter";
+  play.roles[0].lane_offset = 1;
+  play.roles[0].ahead_m = 12.0;
+  sc.plays = {play};
+  auto casts_of = [&](const ObservedVehicle& candidate) {
+    DirectorCore core(sc, 1);
+    StepInput in;
+    std::string casts;
+    for (Step k = 0; k < 20; ++k) {
+      in.step = k;
+      const double ego_s = 2000.0 + 2.5 * static_cast<double>(k);
+      in.ego = testing::ego_at(k, ego_s, 25.0);
+      ObservedVehicle v = candidate;
+      v.s_m += 2.5 * static_cast<double>(k);
+      in.world_prev = {v};
+      for (const PlayReport& r : core.step(in).reports) {
+        if (r.detail.rfind("cast: ", 0) == 0) casts += r.detail + "; ";
+      }
+    }
+    return casts;
+  };
+  // 150 m behind the ego it would reach its start at 29 m/s on average, 4 above the start's speed,
+  // but the place it is aimed at first only at 35.6 m/s, beyond the transport band: not cast.
+  EXPECT_EQ(casts_of(vehicle(7, 1850.0, 28.0, 1)).find("cutter = vehicle 7"), std::string::npos);
+  // 62 m ahead of the ego at its speed it is there in time: cast.
+  EXPECT_NE(casts_of(vehicle(8, 2062.0, 25.0, 1)).find("cutter = vehicle 8"), std::string::npos);
+}
+
 // A play driven to trigger point 2 with one vehicle cast as the lead, then the ego `past_m`
 // beyond it with the lead `miss_m` from its start position. Returns the core and the last input.
 struct AtTrigger2 {

@@ -106,16 +106,24 @@ double casting_cost(const Slot& slot, const PlayRoleConfig& role, const Observed
 
 std::vector<int> cast_roles(const std::vector<Slot>& slots, const std::vector<PlayRoleConfig>& role_configs,
                             const std::vector<bool>& available, const CastingSituation& at, const DirectorConfig& cfg) {
+  return cast_roles(slots, role_configs, available, std::vector<CastingSituation>(slots.size(), at), cfg);
+}
+
+std::vector<int> cast_roles(const std::vector<Slot>& slots, const std::vector<PlayRoleConfig>& role_configs,
+                            const std::vector<bool>& available, const std::vector<CastingSituation>& at_role,
+                            const DirectorConfig& cfg) {
   const std::size_t roles = slots.size();
+  if (roles == 0) return {};
+  const std::vector<ObservedVehicle>& world = at_role.front().world;
   // Only vehicles that could play some role take part (keeps the programme small).
   std::vector<std::size_t> pool;
   std::vector<std::vector<double>> cost(roles);
-  for (std::size_t i = 0; i < at.world.size(); ++i) {
+  for (std::size_t i = 0; i < world.size(); ++i) {
     if (!available[i]) continue;
     std::vector<double> c(roles);
     bool any = false;
     for (std::size_t r = 0; r < roles; ++r) {
-      c[r] = casting_cost(slots[r], role_configs[r], at.world[i], at, cfg);
+      c[r] = casting_cost(slots[r], role_configs[r], world[i], at_role[r], cfg);
       any = any || std::isfinite(c[r]);
     }
     if (!any) continue;

@@ -46,6 +46,11 @@ double casting_cost(const Slot& slot, const PlayRoleConfig& role, const Observed
 // world, or -1 (create one). `available[i]`: world[i] may be cast (not an actor already).
 std::vector<int> cast_roles(const std::vector<Slot>& slots, const std::vector<PlayRoleConfig>& roles,
                             const std::vector<bool>& available, const CastingSituation& at, const DirectorConfig& cfg);
+// The same with a situation of its own for each role (the same world and ego): the time and the
+// ego's place where the role's way leads first (way_to, stage.hpp).
+std::vector<int> cast_roles(const std::vector<Slot>& slots, const std::vector<PlayRoleConfig>& roles,
+                            const std::vector<bool>& available, const std::vector<CastingSituation>& at_role,
+                            const DirectorConfig& cfg);
 
 // Where to create a vehicle of length `length_m` for `slot`: out of sight (an outer region, at
 // least hidden_margin_m beyond the inner region), from where it reaches the slot in time at a

@@ -227,7 +227,7 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
   std::string cast_detail;
   if (uncast && in.ego.time_s - last_cast_attempt_s_ >= kCastInterval_s - 1e-9) {
     last_cast_attempt_s_ = in.ego.time_s;
-    cast_detail = cast(in, slots, aim, out);
+    cast_detail = cast(in, slots, aim, pred.time_s, out);
   }
   const bool all_cast = std::none_of(roles_.begin(), roles_.end(), [](const Role& r) { return r.actor == kNoVehicle; });
   if (all_cast && phase_ == PlayPhase::kPreparing) {
@@ -240,28 +240,40 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
   if (!cast_detail.empty()) report(in, out, "cast: " + cast_detail);
 }
 
-std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, PlayOutput& out) {
-  // Only the roles still without an actor are cast; the others keep theirs.
-  std::vector<std::size_t> open;
-  std::vector<PlayRoleConfig> sub_roles;
-  std::vector<Slot> sub_slots;
-  for (std::size_t r = 0; r < roles_.size(); ++r) {
-    if (!this->open(roles_[r], in)) continue;
-    open.push_back(r);
-    sub_roles.push_back(play_.roles[r]);
-    sub_slots.push_back(slots[r]);
-  }
+std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
+                          PlayOutput& out) {
   const CastingSituation at{in.world,       in.ego,
                             aim.time_s,     aim.ego_s_m,
                             setting_.lanes, setting_.type_accel_mps2,
                             zones_of(staged_, in.ego.direction, staged_lane(in), aim.ego_s_m, setting_.lanes)};
+  // Only the roles still without an actor are cast; the others keep theirs. Each is cast for where
+  // its way leads first (way_to: a cutter waits ahead of its start until the approach), as
+  // move_actors will move it: cast or created for its start instead, a cutter from behind had
+  // 20 s less and 50 m further to go, missed by far at once and was replaced after 3 s, again and
+  // again.
+  std::vector<std::size_t> open;
+  std::vector<PlayRoleConfig> sub_roles;
+  std::vector<Slot> sub_slots;
+  std::vector<CastingSituation> sub_at;
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
+    if (!this->open(roles_[r], in)) continue;
+    open.push_back(r);
+    sub_roles.push_back(play_.roles[r]);
+    const Waypoint way = way_to(slots[r], aim.time_s, staged_.roles[r], in.ego.direction, staged_lane(in),
+                                time_to_start_s, setting_.director);
+    sub_slots.push_back(way.slot);
+    CastingSituation role_at = at;
+    role_at.time_to_start_s = way.time_s;
+    role_at.ego_s_at_handover_m = aim.ego_s_m - sign(in.ego.direction) * aim.ego_speed_mps * (aim.time_s - way.time_s);
+    sub_at.push_back(role_at);
+  }
   // Vehicles this play cleared off the stage may be cast too (one in the way of an actor that
   // cannot get into its lane may be the better actor).
   std::vector<bool> castable = in.available;
   for (std::size_t i = 0; i < in.world.size(); ++i) {
     if (is_cleared(in.world[i].id)) castable[i] = true;
   }
-  const std::vector<int> chosen = cast_roles(sub_slots, sub_roles, castable, at, setting_.director);
+  const std::vector<int> chosen = cast_roles(sub_slots, sub_roles, castable, sub_at, setting_.director);
   const WindowBounds window = WindowBounds::around(in.ego.s_m, setting_.window);
   std::string detail;
   for (std::size_t k = 0; k < open.size(); ++k) {
@@ -283,7 +295,7 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
       continue;
     }
     const int type = rc.type_index >= 0 ? rc.type_index : 0;
-    const auto place = hidden_placement(sub_slots[k], in.factory.length_m(type), at, window, setting_.director);
+    const auto place = hidden_placement(sub_slots[k], in.factory.length_m(type), sub_at[k], window, setting_.director);
     if (!place) continue;  // tried again at the next casting
     replace();
     Vehicle v = in.factory.make(type, sub_slots[k].direction, sub_slots[k].lane, place->s_m, place->speed_mps);

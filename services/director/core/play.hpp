@@ -121,7 +121,8 @@ class PlayRun {
 
   void prepare(const PlayInput& in, PlayOutput& out);
   // Casts the roles without an actor; returns what it did ("" for nothing).
-  std::string cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, PlayOutput& out);
+  std::string cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
+                   PlayOutput& out);
   void move_actors(const PlayInput& in, const std::vector<Slot>& slots, double aim_time_s, double time_to_start_s,
                    PlayOutput& out);
   void clear_zones(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
