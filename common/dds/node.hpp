@@ -49,11 +49,7 @@ class Writer {
   // Blocks until every matched reliable reader has acknowledged every sample written so far, or
   // `timeout` has passed; true in the first case.
   bool wait_for_acknowledgments(std::chrono::milliseconds timeout) const {
-    constexpr long long kMsPerS = 1000;
-    constexpr long long kNsPerMs = 1000000;
-    const long long ms = timeout.count();
-    const eprosima::fastrtps::Duration_t limit(static_cast<std::int32_t>(ms / kMsPerS),
-                                               static_cast<std::uint32_t>((ms % kMsPerS) * kNsPerMs));
+    const eprosima::fastrtps::Duration_t limit(std::chrono::duration<long double>(timeout).count());
     return writer_->wait_for_acknowledgments(limit) == ReturnCode_t::RETCODE_OK;
   }
 

@@ -70,12 +70,15 @@ void trace_traffic(std::FILE* out, const StepInput& in) {
             [](const ObservedVehicle& a, const ObservedVehicle& b) { return a.s_m < b.s_m; });
   std::fprintf(out, "  t %.1f ego %.0f v %.1f lane %d |", in.ego.time_s, in.ego.s_m, in.ego.speed_mps, in.ego.lane);
   for (const ObservedVehicle& v : near) {
-    // A lane change under way shows its target (L0>1), an indicator without one its side (L0<, L0>).
-    const char* signal = v.lane != v.target_lane ? "" : (v.indicator == 1 ? "<" : (v.indicator == 2 ? ">" : ""));
     std::fprintf(out, " %s%u@%+.0f/%.1f/L%d", v.direction == in.ego.direction ? "" : "<", v.id, v.s_m - in.ego.s_m,
                  v.speed_mps, v.lane);
-    if (v.lane != v.target_lane) std::fprintf(out, ">%d", v.target_lane);
-    std::fprintf(out, "%s%s", signal, control_mark(v.control));
+    // A lane change under way shows its target (L0>1), an indicator without one its side (L0<, L0>).
+    if (v.lane != v.target_lane) {
+      std::fprintf(out, ">%d", v.target_lane);
+    } else if (v.indicator != 0) {
+      std::fprintf(out, "%s", v.indicator == 1 ? "<" : ">");
+    }
+    std::fprintf(out, "%s", control_mark(v.control));
   }
   std::fprintf(out, "\n");
 }

@@ -130,7 +130,7 @@ void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
     if (f == nullptr) {
       // Beside a standing one, one that held back would stand there with it for good: it drives
       // on as it likes (moving, one that fell back out of reach holds on until it has moved over).
-      if (before != letting_in_.end() && v.speed_mps < kLetIn_mps) {
+      if (before != letting_in_.end() && nearly_stands(v)) {
         stop_holding_back(before->second);
         letting_in_.erase(before);
       }

@@ -311,9 +311,9 @@ const ObservedVehicle* follower_to_let_in(const ObservedVehicle& waiting, int la
                                           const std::vector<ObservedVehicle>& world, const EgoObservation& ego) {
   const double front_p = waiting.progress_m() + 0.5 * waiting.length_m;
   const double rear_p = waiting.progress_m() - 0.5 * waiting.length_m;
-  // Beside a waiting vehicle that (nearly) stands, one holding back kLetIn_mps below its speed
-  // stands too and never falls behind it: that one drives on, and the one behind it lets it in.
-  const bool standing = waiting.speed_mps < kLetIn_mps;
+  // Beside a waiting vehicle that nearly stands, one holding back stands too and never falls
+  // behind it: that one drives on, and the one behind it lets it in.
+  const bool standing = nearly_stands(waiting);
   const ObservedVehicle* nearest = nullptr;
   for (const ObservedVehicle& w : world) {
     if (w.id == waiting.id || w.direction != waiting.direction || !occupies(w, w.direction, lane)) continue;

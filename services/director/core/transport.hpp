@@ -132,15 +132,17 @@ std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, co
 // (indicator on) is let in, as drivers let in one who signals: the vehicle just behind it in the
 // target lane (its front behind the waiting one's front, its gap to that one's rear less than
 // kLetInReach_s at its own speed or kLetInQueueReach_m; overlapping counts, except beside one
-// slower than kLetIn_mps,
-// which it could not fall behind) is asked to hold back kLetIn_mps below the waiting one's speed
-// until it has moved over. In dense traffic the lane the vehicles are cleared
+// that nearly stands, which it could not fall behind) is asked to hold back kLetIn_mps below the
+// waiting one's speed until it has moved over. In dense traffic the lane the vehicles are cleared
 // into has no gap wide enough at its speed, and one that waited for a gap fell ever further below
 // that speed (gap_seeking_cap_mps2), with the vehicles behind it, the ego among them.
 inline constexpr double kLetInReach_s = 2.5;
 // In a slow or standing queue, the one queued just behind (its gap less than this) lets it in.
 inline constexpr double kLetInQueueReach_m = 10.0;
 inline constexpr double kLetIn_mps = 2.0;
+// A waiting vehicle slower than kLetIn_mps: one holding back kLetIn_mps below it stands, and
+// beside it would stand there with it for good.
+inline bool nearly_stands(const ObservedVehicle& waiting) { return waiting.speed_mps < kLetIn_mps; }
 // The vehicle that would let `waiting` into `lane`, if any (nullptr: none close enough, or the
 // ego is the one just behind it there).
 const ObservedVehicle* follower_to_let_in(const ObservedVehicle& waiting, int lane,
