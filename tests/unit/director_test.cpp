@@ -1,5 +1,5 @@
-// The event director's parts: start-time estimation, casting as an assignment, where new
-// vehicles are created, the script, and a play's phases (transport: director_transport_test).
+// The event director's parts: start-time estimation, staging, the script, a play's phases, aiming
+// and letting in (casting: director_casting_test; transport: director_transport_test).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,11 +8,11 @@
 
 #include "core_test_util.hpp"
 #include "director_test_util.hpp"
-#include "director/core/assignment.hpp"
-#include "director/core/casting.hpp"
 #include "director/core/director_core.hpp"
 #include "director/core/script.hpp"
+#include "director/core/stage.hpp"
 #include "director/core/start_time.hpp"
+#include "director/core/transport.hpp"
 
 namespace entourage::director {
 namespace {
@@ -59,209 +59,6 @@ TEST(StartTime, ABrakingDriverMovesTheEstimateLaterAndAStandingOneMakesItUnknown
   StartTimeEstimator stopped(StartTimeParams{5.0, 2.0, 0.0, 3600.0});
   stopped.observe(0.0, 0.0, 0.1);
   EXPECT_LT(stopped.predict(100.0).time_s, 0.0);
-}
-
-// --- Casting
-
-TEST(Assignment, FindsTheLeastTotalCostWhereFirstComeWouldNot) {
-  // Greedy (role 0 first takes its cheapest, vehicle 0) pays 1 + 100; the optimum pays 2 + 1.
-  const std::vector<std::vector<double>> cost = {{1.0, 2.0}, {1.0, 100.0}};
-  const std::vector<int> a = assign_roles(cost, {50.0, 50.0});
-  EXPECT_EQ(a[0], 1);
-  EXPECT_EQ(a[1], 0);
-}
-
-TEST(Assignment, LeavesARoleUnassignedWhenThatIsCheaperOrNothingFits) {
-  EXPECT_EQ(assign_roles({{30.0}}, {10.0})[0], -1);
-  EXPECT_EQ(assign_roles({{kInf, 3.0}}, {10.0})[0], 1);
-  EXPECT_EQ(assign_roles({{kInf}}, {10.0})[0], -1);
-  const std::vector<int> two = assign_roles({{1.0}, {1.0}}, {10.0, 10.0});  // one vehicle, two roles
-  EXPECT_EQ((two[0] == 0) + (two[1] == 0), 1);
-}
-
-
-TEST(Casting, AVehicleThatCannotReachTheSlotInTimeOrMustPassTheEgoOnOneLaneCannotPlay) {
-  const PlayConfig play = lead_play();
-  DirectorConfig cfg;
-  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
-  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), Lanes{1, 1})[0];
-  EXPECT_DOUBLE_EQ(slot.s_m, 3040.0);
-  std::vector<ObservedVehicle> world = {vehicle(1, 2200.0, 24.0), vehicle(3, 1900.0, 30.0)};
-  const CastingSituation at{world, ego, 40.0, 3000.0, Lanes{1, 1}, {}};
-  // Vehicle 1: 840 m in 40 s is 21 m/s on average, ending at 25: it must cruise below 21 (its
-  // cost is that change of speed from its 24).
-  const double cost = casting_cost(slot, play.roles[0], world[0], at, cfg);
-  EXPECT_GT(cost, 3.0);
-  EXPECT_LT(cost, 7.0);
-  // A vehicle just behind the slot would have to average 3.5 m/s: outside the band.
-  EXPECT_EQ(casting_cost(slot, play.roles[0], vehicle(2, 2900.0, 25.0), at, cfg), kInf);
-  // Vehicle 3 is behind the ego and would have to pass it: actors do not overtake on one lane.
-  EXPECT_EQ(casting_cost(slot, play.roles[0], world[1], at, cfg), kInf);
-  // With two lanes it can, at the cost of the lane changes.
-  const CastingSituation two{world, ego, 40.0, 3000.0, Lanes{2, 0}, {}};
-  EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], world[1], two, cfg)));
-  // A slow vehicle ahead of vehicle 1 that it would have to get past on one lane blocks it (at
-  // 10 m/s it is at 2900 m when vehicle 1 should be at 3040 m); a fast one that stays ahead, or
-  // that would overtake vehicle 1, does not.
-  std::vector<ObservedVehicle> with_fast = world;
-  with_fast.push_back(vehicle(4, 2500.0, 22.0));
-  with_fast.push_back(vehicle(5, 2100.0, 30.0));
-  const CastingSituation fine{with_fast, ego, 40.0, 3000.0, Lanes{1, 1}, {}};
-  EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], world[0], fine, cfg)));
-  world.push_back(vehicle(6, 2500.0, 10.0));
-  const CastingSituation blocked{world, ego, 40.0, 3000.0, Lanes{1, 1}, {}};
-  EXPECT_EQ(casting_cost(slot, play.roles[0], world[0], blocked, cfg), kInf);
-}
-
-TEST(Casting, AVehicleThatMustPassTheEgoToReachASlotInTheEgosLaneCostsMoreThanACreation) {
-  const PlayConfig play = lead_play();  // 40 m ahead of the ego, in its lane
-  DirectorConfig cfg;
-  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
-  const Lanes lanes{2, 0};
-  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), lanes)[0];
-  // Vehicle 1, 50 m behind the ego in its lane, reaches the slot at 26.25 m/s on average: a small
-  // change of speed and two lane changes, but it must get past the ego, whose speed is the
-  // driver's, and back into the ego's lane ahead of it. A vehicle created out of sight is the
-  // cheaper choice.
-  const std::vector<ObservedVehicle> world{vehicle(1, 1950.0, 25.0)};
-  const CastingSituation at{world, ego, 40.0, 3000.0, lanes, {}};
-  const double cost = casting_cost(slot, play.roles[0], world[0], at, cfg);
-  ASSERT_TRUE(std::isfinite(cost));
-  EXPECT_GT(cost, cfg.max_speed_offset_mps);
-  EXPECT_EQ(cast_roles({slot}, play.roles, {true}, at, cfg), std::vector<int>{-1});
-  // With the ego in the other lane it only has to get past the ego beside it: it is cast.
-  const EgoObservation beside = testing::ego_at(0, 2000.0, 25.0, 1);
-  const CastingSituation passing{world, beside, 40.0, 3000.0, lanes, {}};
-  EXPECT_LT(casting_cost(slot, play.roles[0], world[0], passing, cfg), cfg.max_speed_offset_mps);
-  EXPECT_EQ(cast_roles({slot}, play.roles, {true}, passing, cfg), std::vector<int>{0});
-}
-
-TEST(Casting, OnOneLaneAVehicleWithAnotherBetweenItAndTheEgoCannotPlayARoleBehindAClearZone) {
-  const PlayConfig play = lead_play();
-  DirectorConfig cfg;
-  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
-  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), Lanes{1, 1})[0];
-  // Vehicle 1 could reach the slot (3040 m); vehicle 2, between it and the ego, follows the ego's
-  // pace and is still between them at the start, where the play wants 3 to 35 m ahead of the ego
-  // clear: on one lane nothing gets it out.
-  const std::vector<ObservedVehicle> world = {vehicle(1, 2200.0, 24.0), vehicle(2, 2100.0, 25.0)};
-  const std::vector<ZoneAtStart> zones = {{Direction::kForward, 0, 3003.0, 3035.0}};
-  const CastingSituation zoned{world, ego, 40.0, 3000.0, Lanes{1, 1}, {}, zones};
-  EXPECT_TRUE(stuck_between(slot, world[0].s_m, world[0].id, zoned));
-  EXPECT_EQ(casting_cost(slot, play.roles[0], world[0], zoned, cfg), kInf);
-  // Vehicle 2 itself has nobody between it and the ego.
-  EXPECT_FALSE(stuck_between(slot, world[1].s_m, world[1].id, zoned));
-  // Without a zone in the way, or with a second lane to clear it into, vehicle 1 may play.
-  const CastingSituation open{world, ego, 40.0, 3000.0, Lanes{1, 1}, {}};
-  EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], world[0], open, cfg)));
-  const CastingSituation two{world, ego, 40.0, 3000.0, Lanes{2, 0}, {}, zones};
-  EXPECT_FALSE(stuck_between(slot, world[0].s_m, world[0].id, two));
-  // Nor is a vehicle created out of sight beyond vehicle 2 any better (20 s to go: a place ahead
-  // is found without the zone, none with it).
-  ScenarioConfig sc = testing::road_scenario(1, 1);
-  const WindowBounds w = WindowBounds::around(ego.s_m, sc.window);
-  const std::vector<ObservedVehicle> only_2 = {world[1]};
-  const CastingSituation create_open{only_2, ego, 20.0, 3000.0, Lanes{1, 1}, {}};
-  const CastingSituation create_zoned{only_2, ego, 20.0, 3000.0, Lanes{1, 1}, {}, zones};
-  EXPECT_TRUE(hidden_placement(slot, 4.5, create_open, w, cfg).has_value());
-  EXPECT_FALSE(hidden_placement(slot, 4.5, create_zoned, w, cfg).has_value());
-}
-
-TEST(Casting, NewVehiclesAreCreatedOutOfSightWithASafeGap) {
-  const PlayConfig play = lead_play();
-  DirectorConfig cfg;
-  ScenarioConfig sc = testing::road_scenario(2, 0);
-  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
-  const WindowBounds w = WindowBounds::around(ego.s_m, sc.window);
-  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), Lanes{2, 0})[0];
-  for (double t : {10.0, 20.0, 30.0, 40.0, 60.0}) {
-    std::vector<ObservedVehicle> world;
-    const CastingSituation at{world, ego, t, 3000.0, Lanes{2, 0}, {}};
-    const auto place = hidden_placement(slot, 4.5, at, w, cfg);
-    if (!place) continue;
-    EXPECT_TRUE(place->s_m >= w.inner_front_m + cfg.hidden_margin_m || place->s_m <= w.inner_rear_m - cfg.hidden_margin_m)
-        << "created at " << place->s_m << " with " << t << " s to go";
-    EXPECT_TRUE(transport_band(slot, cfg).contains(place->speed_mps));
-  }
-  // 30 s to go: the ideal place (750 m behind the slot) is in view; the nearest hidden one ahead,
-  // 50 m beyond the inner region, needs 19.7 m/s, within the band.
-  std::vector<ObservedVehicle> world;
-  const CastingSituation at{world, ego, 30.0, 3000.0, Lanes{2, 0}, {}};
-  ASSERT_TRUE(hidden_placement(slot, 4.5, at, w, cfg).has_value());
-  const auto free_place = *hidden_placement(slot, 4.5, at, w, cfg);
-  EXPECT_DOUBLE_EQ(free_place.s_m, w.inner_front_m + cfg.hidden_margin_m);
-  EXPECT_NEAR(free_place.speed_mps, 19.67, 0.01);
-  // Occupied there: it moves on to a free place.
-  world = {vehicle(9, free_place.s_m + 5.0, 25.0)};
-  const CastingSituation busy{world, ego, 30.0, 3000.0, Lanes{2, 0}, {}};
-  const auto moved = hidden_placement(slot, 4.5, busy, w, cfg);
-  ASSERT_TRUE(moved.has_value());
-  EXPECT_GT(std::abs(moved->s_m - world[0].s_m), 4.5 + 5.0 + 1.5 * 25.0 - 1e-9);
-}
-
-TEST(Casting, ANewVehicleForASlotAheadOfTheEgoInItsLaneComesFromAheadRatherThanPastTheEgo) {
-  // A lead 40 m ahead of the ego in its lane at the start, the ego at 25 m/s in lane 0 of two, at
-  // 2000 m: the inner region ends 400 m ahead and 200 m behind, so a hidden place is at least
-  // 2450 m or at most 1750 m.
-  DirectorConfig cfg;
-  ScenarioConfig sc = testing::road_scenario(2, 0);
-  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
-  const WindowBounds w = WindowBounds::around(ego.s_m, sc.window);
-  const std::vector<ObservedVehicle> world;
-  auto slot_in = [](double time_s) {
-    Slot slot;
-    slot.lane = 0;
-    slot.s_m = 2000.0 + 25.0 * time_s + 40.0;
-    slot.speed_mps = 25.0;
-    return slot;
-  };
-  // 60 s to go: from behind it needs 29.83 m/s (4.83 above the start's speed), from ahead 18.17
-  // (6.83 below). From behind it would have to get past the ego and back into its lane ahead of
-  // it, as a lead created behind the ego failed to in traced runs (held behind the ego by the
-  // slower traffic of the other lane): it is created ahead.
-  const CastingSituation sixty{world, ego, 60.0, 2000.0 + 25.0 * 60.0, Lanes{2, 0}, {}};
-  const auto ahead = hidden_placement(slot_in(60.0), 4.5, sixty, w, cfg);
-  ASSERT_TRUE(ahead.has_value());
-  EXPECT_EQ(ahead->region, Region::kOuterFront);
-  EXPECT_NEAR(ahead->speed_mps, 1090.0 / 60.0, 1e-9);
-  // 40 s to go: from ahead it would need 14.75 m/s, outside the band; behind is the only place.
-  const CastingSituation forty{world, ego, 40.0, 2000.0 + 25.0 * 40.0, Lanes{2, 0}, {}};
-  const auto behind = hidden_placement(slot_in(40.0), 4.5, forty, w, cfg);
-  ASSERT_TRUE(behind.has_value());
-  EXPECT_EQ(behind->region, Region::kOuterRear);
-  // With the ego in the other lane the one from behind passes it beside its own lane: the smaller
-  // change of speed wins again.
-  const EgoObservation beside = testing::ego_at(0, 2000.0, 25.0, 1);
-  const CastingSituation passing{world, beside, 60.0, 2000.0 + 25.0 * 60.0, Lanes{2, 0}, {}};
-  const auto from_behind = hidden_placement(slot_in(60.0), 4.5, passing, w, cfg);
-  ASSERT_TRUE(from_behind.has_value());
-  EXPECT_EQ(from_behind->region, Region::kOuterRear);
-}
-
-TEST(Casting, AVehicleWhoseIdealPlaceIsBeyondTheWindowIsCreatedOnlyWithRoomLeftInTheBand) {
-  // An oncoming car 200 m ahead of the ego at the start (3200 m, 22 m/s). With the ego at 2900 m
-  // the window ends at 3900 m; created vehicles stay 30 m inside it.
-  DirectorConfig cfg;
-  ScenarioConfig sc = testing::road_scenario(1, 1);
-  const EgoObservation ego = testing::ego_at(0, 2900.0, 25.0);
-  const WindowBounds w = WindowBounds::around(ego.s_m, sc.window);
-  Slot slot;
-  slot.direction = Direction::kBackward;
-  slot.lane = 0;
-  slot.s_m = 3200.0;
-  slot.speed_mps = 22.0;
-  const std::vector<ObservedVehicle> world;
-  // 40 s to go: the ideal place (4080 m) is beyond the window; at its edge the car would have to
-  // wait at 16.75 m/s, 5.25 below the start speed (more than half the band's 8): not yet.
-  const CastingSituation early{world, ego, 40.0, 3000.0, Lanes{1, 1}, {}};
-  EXPECT_TRUE(transport_band(slot, cfg).contains((w.front_edge_m - 30.0 - slot.s_m) / 40.0));
-  EXPECT_FALSE(hidden_placement(slot, 4.5, early, w, cfg).has_value());
-  // 35 s to go: at the edge it needs 19.1 m/s.
-  const CastingSituation later{world, ego, 35.0, 3000.0, Lanes{1, 1}, {}};
-  const auto place = hidden_placement(slot, 4.5, later, w, cfg);
-  ASSERT_TRUE(place.has_value());
-  EXPECT_DOUBLE_EQ(place->s_m, w.front_edge_m - 30.0);
-  EXPECT_NEAR(place->speed_mps, 670.0 / 35.0, 1e-9);
 }
 
 TEST(Staging, ARoleBesideTheEgoWaitsAheadOfItsStartUntilTheApproach) {
