@@ -175,6 +175,47 @@ TEST(Generator, AStandingEgoGetsTheWholeFlowFromBehind) {
   EXPECT_EQ(c.arrivals_at[1], 0U);
 }
 
+// A slow vehicle crawling over the rear edge holds its lane for a minute; trucks keep to that
+// lane and must wait, but the cars that arrive after them pass it in the other lane (as on the
+// road, before the edge reached either). Served strictly in their order of arrival, the first
+// waiting truck stopped every entry from behind (the window's rear arrivals came at 0.87 of the
+// moving-observer rate, entourage-bench-catchups --probe-kph 80).
+TEST(Generator, APlatoonThatCannotEnterYetDoesNotHoldUpThoseArrivingAfterIt) {
+  const ScenarioConfig sc = unregulated();
+  GeneratorCore g(sc, 7);
+  const double u = 22.0;
+  const int steps = 18000;  // half an hour
+  const double blocker_ahead_m = 5.0;  // its rear this far inside the rear edge, in the right lane
+  double s = 5000.0;
+  std::uint64_t late_births = 0;  // from behind, in the last ten minutes
+  for (int k = 0; k < steps; ++k) {
+    StepInput in;
+    in.step = static_cast<Step>(k);
+    in.ego = ego_at(in.step, s, u);
+    ObservedVehicle blocker;  // published at the previous step, moving with the window
+    blocker.id = 1000000;
+    blocker.direction = Direction::kForward;
+    blocker.lane = blocker.target_lane = 0;
+    blocker.length_m = 16.5;
+    blocker.speed_mps = u;
+    blocker.s_m = WindowBounds::around(s, sc.window).rear_edge_m + blocker_ahead_m + 0.5 * blocker.length_m -
+                  u * sc.step_s;
+    in.world_prev.push_back(blocker);
+    const StepOutput out = g.step(in);
+    for (const auto& h : out.handoffs) {
+      if (h.reason != HandoffReason::kBirth || h.vehicle.direction != Direction::kForward || h.vehicle.s_m > s) continue;
+      EXPECT_EQ(h.vehicle.lane, 1) << "entered the lane the blocker holds";
+      if (k >= steps - 6000) ++late_births;
+    }
+    s += u * sc.step_s;
+  }
+  const Counters& c = g.counters();
+  EXPECT_GT(c.members_at[0], c.placed_at[0] + 3) << "no truck waiting: the test blocks nothing";
+  // The cars' share of the arrivals from behind, at the moving-observer rate, with Poisson room.
+  const double expected = 0.5 * g.stream(Direction::kForward).vehicles_rear_per_s(u) * 600.0;
+  EXPECT_GT(static_cast<double>(late_births), expected - 3.0 * std::sqrt(expected)) << late_births;
+}
+
 // Regulation: the ego's direction's arrivals scaled by 1 + gain (expected - present) / expected,
 // within [0, 1 + gain], counted over the outer regions; the oncoming direction is not regulated. A direction's arrivals are counted with the window held at a standing world of that
 // direction's vehicles: at the stream's density times `density_factor`, and `inner_factor` times

@@ -340,6 +340,33 @@ TEST(MesoCore, ACarPassesASlowTruckInTheOuterRegionOfARuralRoad) {
   EXPECT_GT(a.s_m, b.s_m + 10.0);
 }
 
+// Back in its lane after the pass, the car is planned at the next step, not at the next update up
+// to a second later: it would keep the braking of its return meanwhile (rural_ego_fast, seed 1:
+// held 4.2 m/s^2 for 0.7 s, braked at 9 m/s^2 at the next plan, and the car behind it was hit).
+TEST(MesoCore, ACarBackFromItsPassIsPlannedAtTheNextStep) {
+  ScenarioConfig sc = two_lane_rural();
+  sc.window.outer_ahead_m = 3000.0;
+  meso::MesoCore core(sc, kMesoId);
+  const EgoObservation ego = ego_at(0, 3000.0, 0.0);
+  const WindowBounds w = WindowBounds::around(3000.0, sc.window);
+  StepOutput out =
+      run_step(core, 1, ego, overtaker_behind_slow_vehicle(sc, w.inner_front_m + 60.0, Region::kOuterFront), {});
+  bool was_passing = false;
+  Step back_at = 0;
+  for (Step k = 2; k < 400 && back_at == 0; ++k) {
+    out = run_step(core, k, ego, {}, as_world(out, kMesoId));
+    const bool passing = core.fleet().vehicles()[0].overtaking.active();
+    if (was_passing && !passing) back_at = k;
+    was_passing = passing;
+  }
+  ASSERT_GT(back_at, 0U) << "the pass never ended";
+  const auto steps_per_plan = static_cast<Step>(std::lround(1.0 / sc.step_s));
+  ASSERT_NE((back_at + 1) % steps_per_plan, 0U) << "the next step is an update anyway: move the start";
+  const std::uint64_t before = core.counters().alert_plans;
+  run_step(core, back_at + 1, ego, {}, as_world(out, kMesoId));
+  EXPECT_EQ(core.counters().alert_plans, before + 1);
+}
+
 // The same pass begun just behind the inner region: the overtaker crosses into it while it passes,
 // stays meso's until it is back in its lane (a handoff does not carry the manoeuvre), and is then
 // handed to micro.

@@ -259,8 +259,8 @@ void GeneratorCore::arrive(const StepInput& in) {
   }
 }
 
-bool GeneratorCore::place_one_by_one(EdgeStream& s, double u, const WindowBounds& w, Step step, StepOutput& out) {
-  Pending& pending = s.queue.front();
+bool GeneratorCore::place_one_by_one(const EdgeStream& s, Pending& pending, double u, const WindowBounds& w, Step step,
+                                     StepOutput& out) {
   const double edge_p = sign(s.dir) * edge_position(s.edge, w);
   const bool from_behind = s.dir == Direction::kForward && s.edge == Edge::kRear;
   while (pending.next_member < pending.platoon.members.size()) {
@@ -307,12 +307,12 @@ bool GeneratorCore::platoon_fits(const Platoon& platoon, Direction dir, int lane
   return true;
 }
 
-bool GeneratorCore::place_from_ahead(EdgeStream& s, const WindowBounds& w) {
+bool GeneratorCore::place_from_ahead(const EdgeStream& s, const Pending& pending, const WindowBounds& w) {
   // A slow platoon lies ahead of the window; the edge reaches its last vehicle first. It joins the
   // front zone whole, its last vehicle just beyond the edge, in its own lane or another one (only
   // the right lane if a member keeps right); its vehicles enter the window as the edge reaches
   // them (hand_over).
-  const Platoon& platoon = s.queue.front().platoon;
+  const Platoon& platoon = pending.platoon;
   const double leader_p = w.front_edge_m + config_.front_entry_margin_m + platoon.members.back().offset_m;
   const int own = platoon.members.front().vehicle.lane;
   bool keep_right = false;
@@ -371,11 +371,15 @@ void GeneratorCore::place(const StepInput& in, StepOutput& out) {
   const double u = std::max(0.0, in.ego.speed_mps);
   for (EdgeStream& s : edges_) {
     const bool ahead = s.dir == Direction::kForward && s.edge == Edge::kFront;
-    while (!s.queue.empty()) {
-      const bool done = ahead ? place_from_ahead(s, w) : place_one_by_one(s, u, w, in.step, out);
-      if (!done) break;
-      s.queue.pop_front();
+    // Every waiting platoon gets its turn, in the order they arrived: one that cannot enter yet
+    // does not hold up those behind it, which may find room in another lane (as faster traffic
+    // passes a slow vehicle before the edge reaches either).
+    std::deque<Pending> waiting;
+    for (Pending& pending : s.queue) {
+      const bool done = ahead ? place_from_ahead(s, pending, w) : place_one_by_one(s, pending, u, w, in.step, out);
+      if (!done) waiting.push_back(std::move(pending));
     }
+    s.queue = std::move(waiting);
     counters_.waited_steps += s.queue.size();
   }
 }

@@ -20,7 +20,9 @@
 //             direction counted in the outer regions, where the ego gathers nobody)
 //   place     from behind and oncoming, a platoon's vehicles enter one by one at the edge, each
 //             when its lane has room there; from ahead, a slow platoon joins the front zone whole,
-//             its last vehicle just beyond the edge, and enters the window as the edge reaches it
+//             its last vehicle just beyond the edge, and enters the window as the edge reaches it.
+//             Every waiting platoon gets its turn, in arrival order: one that cannot enter yet does
+//             not hold up the others
 //   hand over front-zone vehicles the edge has reached go to meso; those far ahead retire
 // New vehicles are handed at once to micro (inner region) or meso (outer regions).
 
@@ -114,8 +116,9 @@ class GeneratorCore {
   void fill(const StepInput& in, StepOutput& out);
   void arrive(const StepInput& in);
   void place(const StepInput& in, StepOutput& out);
-  bool place_one_by_one(EdgeStream& s, double u, const WindowBounds& w, Step step, StepOutput& out);
-  bool place_from_ahead(EdgeStream& s, const WindowBounds& w);
+  bool place_one_by_one(const EdgeStream& s, Pending& pending, double u, const WindowBounds& w, Step step,
+                        StepOutput& out);
+  bool place_from_ahead(const EdgeStream& s, const Pending& pending, const WindowBounds& w);
   bool platoon_fits(const Platoon& platoon, Direction dir, int lane, double leader_p,
                     std::vector<VehicleId>& in_the_way) const;
   void add_to_zone(const Vehicle& v);
