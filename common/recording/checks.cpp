@@ -134,7 +134,7 @@ struct Box {
   double s, d, half_length, half_width;
 };
 
-CheckResult check_no_overlap(const Tables& t, double ego_length_m, double ego_width_m) {
+CheckResult check_no_overlap(const Tables& t, const EgoConfig& ego_config) {
   Violations v;
   std::vector<Box> boxes;
   for_each_step(t, [&](std::uint64_t step, std::size_t i, std::size_t j, const EgoRow* ego) {
@@ -143,7 +143,9 @@ CheckResult check_no_overlap(const Tables& t, double ego_length_m, double ego_wi
       const auto& r = t.vehicles[k];
       boxes.push_back({r.id, r.direction, r.s_m, r.d_m, r.length_m / 2, r.width_m / 2});
     }
-    if (ego != nullptr) boxes.push_back({0, 1, ego->s_m, ego->d_m, ego_length_m / 2, ego_width_m / 2});
+    if (ego != nullptr && !ego_config.transparent) {
+      boxes.push_back({0, 1, ego->s_m, ego->d_m, ego_config.length_m / 2, ego_config.width_m / 2});
+    }
     std::sort(boxes.begin(), boxes.end(), [](const Box& a, const Box& b) { return a.s < b.s; });
     for (std::size_t a = 0; a < boxes.size(); ++a) {
       for (std::size_t b = a + 1; b < boxes.size(); ++b) {
@@ -164,7 +166,8 @@ CheckResult check_no_overlap(const Tables& t, double ego_length_m, double ego_wi
   return v.result("no_overlap", "no two vehicles overlap (either direction)");
 }
 
-CheckResult check_ego_interacts(const Tables& t) {
+CheckResult check_ego_interacts(const Tables& t, bool transparent) {
+  if (transparent) return {"ego_interacts", true, 0, "the ego is transparent: the traffic does not see it"};
   std::uint64_t ego_leads = 0;
   std::uint64_t ego_follows = 0;
   std::uint64_t followed_inside = 0;  // steps with a vehicle right behind the ego in the inner region
@@ -194,10 +197,10 @@ CheckResult check_ego_interacts(const Tables& t) {
 
 }  // namespace
 
-std::vector<CheckResult> check_invariants(const Tables& t, double ego_length_m, double ego_width_m) {
+std::vector<CheckResult> check_invariants(const Tables& t, const EgoConfig& ego) {
   const auto ranges = ranges_of(t);
-  return {check_one_owner(t), check_continuity(ranges), check_no_pop_in(t, ranges),
-          check_no_overlap(t, ego_length_m, ego_width_m), check_ego_interacts(t)};
+  return {check_one_owner(t), check_continuity(ranges), check_no_pop_in(t, ranges), check_no_overlap(t, ego),
+          check_ego_interacts(t, ego.transparent)};
 }
 
 }  // namespace entourage::recording

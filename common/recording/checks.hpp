@@ -11,13 +11,15 @@
 //                    inner region (nobody caught up: rural seed 2's five minutes, where the
 //                    nearest follower stayed in the outer region). How often a micro vehicle is the ego's leader is
 //                    reported too, but not required: an ego slower than everything on the road
-//                    (rural_ego_slow) may have nobody ahead of it in the inner region for minutes
+//                    (rural_ego_slow) may have nobody ahead of it in the inner region for minutes.
+//                    A transparent ego (a probe) interacts with nobody: the check does not apply
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "recording/tables.hpp"
+#include "scenario/config.hpp"
 
 namespace entourage::recording {
 
@@ -28,6 +30,8 @@ struct CheckResult {
   std::string detail;  // the first violations, or what was measured
 };
 
-std::vector<CheckResult> check_invariants(const Tables& t, double ego_length_m, double ego_width_m);
+// `ego`: its size, and whether it is transparent (scenario `ego.transparent`: a probe the traffic
+// drives through, so it is left out of no_overlap, and ego_interacts does not apply).
+std::vector<CheckResult> check_invariants(const Tables& t, const EgoConfig& ego);
 
 }  // namespace entourage::recording

@@ -156,6 +156,7 @@ struct EgoConfig {
   double length_m = 4.6;
   double width_m = 1.8;
   EgoDriverConfig driver;
+  bool transparent = false;  // the traffic does not see it, it does not see the traffic (a probe)
 };
 
 // A role of a play: the vehicle it needs and where it must be, relative to the ego, at the

@@ -159,6 +159,7 @@ EgoConfig resolve_ego(const Ego& e) {
   c.start_speed_mps = e.has_start_speed_kph() ? kph_to_mps(e.start_speed_kph()) : -1.0;
   c.length_m = e.length_m();
   c.width_m = e.width_m();
+  c.transparent = e.transparent();
   const EgoIdmDriver& d = e.idm();  // defaults when the ego uses a speed profile
   c.driver.desired_speed_mps = kph_to_mps(d.desired_speed_kph());
   c.driver.time_gap_s = d.time_gap_s();

@@ -170,6 +170,9 @@ void check_ego(const Cursor& top, const Scenario& s) {
   if (e.has_start_speed_kph()) c.range("start_speed_kph", e.start_speed_kph(), 0.0, kMaxSpeedLimit_kph);
   c.range("length_m", e.length_m(), 0.0, kMaxVehicleLength_m, true);
   c.range("width_m", e.width_m(), 0.0, kMaxVehicleWidth_m, true);
+  if (e.transparent() && s.play_size() > 0) {
+    c.fail("transparent", "a play is staged around an ego the traffic sees: a transparent ego cannot have plays");
+  }
   if (e.has_idm()) {
     const EgoIdmDriver& d = e.idm();
     const Cursor dc = c.child(d, "idm");

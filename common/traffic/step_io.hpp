@@ -25,6 +25,12 @@ struct StepInput {
   std::vector<ActorCommand> commands;       // director commands written at step - 1, by vehicle id
 };
 
+// The ego at step - 1 as the traffic sees it: none at step 0, nor when the scenario's ego is
+// transparent (a probe the traffic drives through: scenario `ego.transparent`).
+inline const EgoObservation* ego_seen(const StepInput& in, bool ego_transparent) {
+  return in.ego_prev && !ego_transparent ? &*in.ego_prev : nullptr;
+}
+
 // What a core publishes of a vehicle at a step: the world-state topic's fields (where it is, how
 // it moves, what it looks like and signals), not its driver, which travels only in handoffs. A
 // record of some 70 bytes instead of the vehicle's 480: every core copies one per owned vehicle

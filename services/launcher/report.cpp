@@ -129,7 +129,7 @@ bool print_report(const ReportInput& in, const recording::Tables& tables, std::o
   }
   bool all_ok = true;
   out << "  invariants:\n";
-  for (const auto& c : recording::check_invariants(tables, in.scenario.ego.length_m, in.scenario.ego.width_m)) {
+  for (const auto& c : recording::check_invariants(tables, in.scenario.ego)) {
     out << "    " << (c.passed ? "ok     " : "FAILED ") << c.name << ": " << c.detail << "\n";
     all_ok = all_ok && c.passed;
   }

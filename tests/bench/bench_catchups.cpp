@@ -17,7 +17,13 @@
 //
 // For both it prints, per hour, the vehicles crossing the points where the window's edges are
 // (in and out, against the moving-observer rates), the mean number of vehicles of the ego's
-// direction in each region, and the flow in the window (distance driven over length and time).
+// direction in each region and their space-mean speed, and the flow in the window (distance driven
+// over length and time).
+//
+// With --probe-kph the window drives' ego is a transparent probe at that speed (scenario
+// ego.transparent: nobody sees it, it sees nobody), the observer the moving-observer relations are
+// made for: its catch-ups test the window's stream itself against the prediction, and no whole road
+// is simulated.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -49,7 +55,20 @@ struct Options {
   int ego_every = 20;  // every n-th car entering the whole road drives like the ego stand-in
   int drives = 0;
   double drive_s = 1800.0;
+  double probe_kph = -1.0;  // > 0: the window drives' ego is a transparent probe at this speed
 };
+
+// The scenario with its ego a probe (scenario `ego.transparent`): an observer at a set speed (its
+// road's curves and limits allowed) that the traffic drives through and that sees nobody, as the
+// moving-observer relations assume.
+ScenarioConfig with_probe(ScenarioConfig sc, double speed_kph) {
+  sc.ego.transparent = true;
+  sc.ego.driver.use_speed_profile = true;
+  sc.ego.driver.profile = {{0.0, kph_to_mps(speed_kph)}};
+  sc.ego.start_speed_mps = kph_to_mps(speed_kph);
+  sc.ego.driver.lane_changes = false;
+  return sc;
+}
 
 // What one observer (a vehicle of the whole road, or the ego of a window drive) met.
 struct Tally {
@@ -69,6 +88,8 @@ struct Tally {
   double rear_outer_seconds = 0.0;   // of those, in the outer region behind
   double front_outer_seconds = 0.0;  // and ahead
   double vehicle_metres = 0.0;       // the distance they drove (Edie's flow: over length and time)
+  double rear_outer_metres = 0.0;    // of that, in the outer region behind
+  double front_outer_metres = 0.0;   // and ahead
   // Window drives: the oncoming vehicles met, against the prediction, and their distance driven in
   // the window.
   double met = 0.0;
@@ -90,6 +111,8 @@ struct Tally {
     rear_outer_seconds += t.rear_outer_seconds;
     front_outer_seconds += t.front_outer_seconds;
     vehicle_metres += t.vehicle_metres;
+    rear_outer_metres += t.rear_outer_metres;
+    front_outer_metres += t.front_outer_metres;
     met += t.met;
     predicted_met += t.predicted_met;
     oncoming_metres += t.oncoming_metres;
@@ -119,8 +142,14 @@ void observe_in_window(Tally& t, double before_m, double rel_m, double speed_mps
   if (in_window(rel_m, w)) {
     t.vehicle_seconds += dt;
     t.vehicle_metres += speed_mps * dt;
-    if (rel_m < w.inner_rear_m) t.rear_outer_seconds += dt;
-    if (rel_m >= w.inner_front_m) t.front_outer_seconds += dt;
+    if (rel_m < w.inner_rear_m) {
+      t.rear_outer_seconds += dt;
+      t.rear_outer_metres += speed_mps * dt;
+    }
+    if (rel_m >= w.inner_front_m) {
+      t.front_outer_seconds += dt;
+      t.front_outer_metres += speed_mps * dt;
+    }
   }
   if (std::isnan(before_m)) {  // born: in at the nearer edge if inside
     if (in_window(rel_m, w)) (rel_m < 0.0 ? t.rear_in : t.front_in) += 1.0;
@@ -322,7 +351,10 @@ void print_group(const std::string& label, const Tally& t, std::size_t observers
 }
 
 // The pooled figures of the ego stand-in's driver (on the whole road or in the window).
-void print_ego(const char* label, const Pooled& p, const ScenarioConfig& sc, double demand_veh_per_s, double density_per_m) {
+void print_ego(const char* label, const Pooled& p, const ScenarioConfig& sc, const ObservedStream& stream) {
+  const double demand_veh_per_s = stream.flow_veh_per_s();
+  const double density_per_m = stream.density_per_m();
+  const double mean_speed_mps = stream.mean_speed_mps();
   const Tally& t = p.total;
   if (t.observed_s <= 0.0) return;
   const Ratio passive = pooled_ratio(p.passive);
@@ -343,6 +375,12 @@ void print_ego(const char* label, const Pooled& p, const ScenarioConfig& sc, dou
               t.vehicle_seconds / t.observed_s, t.rear_outer_seconds / t.observed_s, inner,
               t.front_outer_seconds / t.observed_s, density_per_m * w.outer_behind_m,
               density_per_m * (w.inner_behind_m + w.inner_ahead_m), density_per_m * w.outer_ahead_m);
+  const auto kph = [](double metres, double seconds) { return seconds > 0.0 ? mps_to_kph(metres / seconds) : 0.0; };
+  const double inner_seconds = t.vehicle_seconds - t.rear_outer_seconds - t.front_outer_seconds;
+  std::printf("  their space-mean speed: %.1f km/h (outer behind %.1f, inner %.1f, outer ahead %.1f; the stream's %.1f)\n",
+              kph(t.vehicle_metres, t.vehicle_seconds), kph(t.rear_outer_metres, t.rear_outer_seconds),
+              kph(t.vehicle_metres - t.rear_outer_metres - t.front_outer_metres, inner_seconds),
+              kph(t.front_outer_metres, t.front_outer_seconds), mps_to_kph(mean_speed_mps));
   const double flow = t.vehicle_metres / (window_length_m(w) * t.observed_s);
   std::printf("  flow of its direction in the window: %.0f veh/h, %+.1f %% of the demand\n", per_second_to_per_hour(flow),
               100.0 * (flow / demand_veh_per_s - 1.0));
@@ -359,6 +397,9 @@ int check_options(const Options& o) {
   if (!(o.warmup_s >= 0.0) || !(o.duration_s > 0.0)) return bad("--warmup must be >= 0 and --duration > 0 seconds");
   if (o.ego_every < 1) return bad("--ego-every must be >= 1");
   if (o.drives < 0 || !(o.drive_s > 0.0)) return bad("--drives must be >= 0 and --drive-duration > 0 seconds");
+  if (o.probe_kph != -1.0 && !(o.probe_kph > 0.0 && o.probe_kph <= 250.0)) {
+    return bad("--probe-kph must be in (0, 250] km/h");
+  }
   return 0;
 }
 
@@ -382,6 +423,9 @@ int main(int argc, char** argv) {
   args.option("ego-every", "N", "whole road: every N-th car drives like the ego stand-in (default 20)", &o.ego_every);
   args.option("drives", "N", "window drives, seeds 1..N (default 0)", &o.drives);
   args.option("drive-duration", "S", "simulated time of each window drive (default 1800)", &o.drive_s);
+  args.option("probe-kph", "KPH", "the window drives' ego is a transparent probe (scenario ego.transparent) at this "
+              "speed, and no whole road is simulated: the moving-observer prediction itself is the reference "
+              "(default: the scenario's ego stand-in)", &o.probe_kph);
   if (const auto rc = args.parse_or_exit(argc, argv)) return *rc;
   if (const int rc = check_options(o)) return rc;
   const auto loaded = scenario::load_file(o.scenario_path);
@@ -392,37 +436,43 @@ int main(int argc, char** argv) {
   const ScenarioConfig& sc = loaded.config;
   const ObservedStream stream(sc, Direction::kForward, StreamObservation{},
                               observation_seed(generator_seed(static_cast<std::uint64_t>(o.seed)), Direction::kForward));
-  const double demand = stream.flow_veh_per_s();
 
-  std::printf("whole road: %s demand, %.0f km straight road, seed %d, %.0f s counted after %.0f s, observers between "
-              "%.0f and %.0f m, every %d-th car the ego stand-in's driver\n",
-              sc.name.c_str(), o.length_m / 1000.0, o.seed, o.duration_s, o.warmup_s, o.margin_m,
-              o.length_m - o.margin_m, o.ego_every);
-  std::printf("  %-28s %6s %8s  per km of the observer's travel, observed of predicted (ratio)\n", "observer", "n", "km");
-  const auto observers = observe_whole_road(sc, o);
-  std::map<std::string, std::pair<Tally, std::size_t>> groups;
   Pooled road_egos;
-  for (const auto& [id, ob] : observers) {
-    if (ob.tally.observed_s <= 0.0) continue;
-    auto& g = groups[ob.group];
-    g.first.add(ob.tally);
-    ++g.second;
-    if (ob.ego_driver) road_egos.add(ob.tally);
+  if (o.probe_kph < 0.0) {
+    std::printf("whole road: %s demand, %.0f km straight road, seed %d, %.0f s counted after %.0f s, observers between "
+                "%.0f and %.0f m, every %d-th car the ego stand-in's driver\n",
+                sc.name.c_str(), o.length_m / 1000.0, o.seed, o.duration_s, o.warmup_s, o.margin_m,
+                o.length_m - o.margin_m, o.ego_every);
+    std::printf("  %-28s %6s %8s  per km of the observer's travel, observed of predicted (ratio)\n", "observer", "n", "km");
+    const auto observers = observe_whole_road(sc, o);
+    std::map<std::string, std::pair<Tally, std::size_t>> groups;
+    for (const auto& [id, ob] : observers) {
+      if (ob.tally.observed_s <= 0.0) continue;
+      auto& g = groups[ob.group];
+      g.first.add(ob.tally);
+      ++g.second;
+      if (ob.ego_driver) road_egos.add(ob.tally);
+    }
+    for (const auto& [label, g] : groups) print_group(label, g.first, g.second);
+    print_ego("the ego stand-in's drivers on the whole road", road_egos, sc, stream);
   }
-  for (const auto& [label, g] : groups) print_group(label, g.first, g.second);
-  print_ego("the ego stand-in's drivers on the whole road", road_egos, sc, demand, stream.density_per_m());
   if (o.drives == 0) return 0;
+  const ScenarioConfig drive_sc = o.probe_kph > 0.0 ? with_probe(sc, o.probe_kph) : sc;
+  if (o.probe_kph > 0.0) {
+    std::printf("window drives of a transparent probe at %.0f km/h (%s demand), against the moving-observer "
+                "prediction\n", o.probe_kph, sc.name.c_str());
+  }
 
   Pooled window;
   for (int d = 1; d <= o.drives; ++d) {
-    const Tally t = window_drive(sc, static_cast<std::uint64_t>(d), o.drive_s);
+    const Tally t = window_drive(drive_sc, static_cast<std::uint64_t>(d), o.drive_s);
     window.add(t);
     std::printf("  window drive, seed %3d: %5.1f km at %5.1f km/h, passive %4.0f of %6.1f, active %4.0f of %6.1f\n", d,
                 t.distance_m / 1000.0, mps_to_kph(t.distance_m / std::max(1.0, t.observed_s)), t.passive,
                 t.predicted_passive, t.active, t.predicted_active);
     std::fflush(stdout);
   }
-  print_ego("the ego stand-in's window drives", window, sc, demand, stream.density_per_m());
+  print_ego(o.probe_kph > 0.0 ? "the probe's window drives" : "the ego stand-in's window drives", window, sc, stream);
   const ObservedStream oncoming(sc, Direction::kBackward, StreamObservation{},
                                 observation_seed(generator_seed(static_cast<std::uint64_t>(o.seed)), Direction::kBackward));
   const Tally& wt = window.total;

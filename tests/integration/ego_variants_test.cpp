@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <ostream>
@@ -21,20 +22,22 @@ namespace {
 struct Variant {
   std::string scenario;
   int domain;
-  // What the ego's own samples must show.
-  std::function<void(const std::vector<recording::EgoRow>&)> ego_check;
+  // What the run must show of the ego.
+  std::function<void(const recording::Tables&)> ego_check;
 };
 
 void PrintTo(const Variant& v, std::ostream* os) { *os << v.scenario; }
 
-void stood_for_a_minute(const std::vector<recording::EgoRow>& ego) {
+void stood_for_a_minute(const recording::Tables& t) {
+  const auto& ego = t.ego;
   std::size_t standing = 0;
   for (const auto& e : ego) standing += e.speed_mps == 0.0 ? 1 : 0;
   EXPECT_NEAR(static_cast<double>(standing) * 0.1, 60.0, 0.5);
   EXPECT_GT(ego.back().speed_mps, 5.0) << "it drove on";
 }
 
-void mostly_near_180(const std::vector<recording::EgoRow>& ego) {
+void mostly_near_180(const recording::Tables& t) {
+  const auto& ego = t.ego;
   std::size_t fast = 0;
   for (const auto& e : ego) fast += e.speed_mps > 170.0 / 3.6 ? 1 : 0;
   EXPECT_GT(static_cast<double>(fast) / static_cast<double>(ego.size()), 0.3);
@@ -46,17 +49,35 @@ double mean_kph(const std::vector<recording::EgoRow>& ego) {
   return 3.6 * sum / static_cast<double>(ego.size());
 }
 
-void below_the_stream(const std::vector<recording::EgoRow>& ego) { EXPECT_LT(mean_kph(ego), 85.0); }
+void below_the_stream(const recording::Tables& t) { EXPECT_LT(mean_kph(t.ego), 85.0); }
 
 // The rural stream's space-mean speed is about 80 km/h (the generator's log).
-void below_the_rural_stream(const std::vector<recording::EgoRow>& ego) { EXPECT_LT(mean_kph(ego), 70.0); }
+void below_the_rural_stream(const recording::Tables& t) { EXPECT_LT(mean_kph(t.ego), 70.0); }
 
-void overtakes_on_the_rural_road(const std::vector<recording::EgoRow>& ego) {
+void overtakes_on_the_rural_road(const recording::Tables& t) {
+  const auto& ego = t.ego;
   EXPECT_GT(mean_kph(ego), 80.0);
   const bool in_the_oncoming_lane =
       std::any_of(ego.begin(), ego.end(), [](const recording::EgoRow& e) { return e.lane >= 1; });
   EXPECT_TRUE(in_the_oncoming_lane) << "it never overtook";
 }
+
+// A transparent probe keeps its set speed (slowing only for the rural curve) and the traffic drives
+// through its place: some vehicle of its direction, in its lane, overlaps it in some step.
+void transparent_at(const recording::Tables& t, double kph, double slack_kph) {
+  EXPECT_NEAR(mean_kph(t.ego), kph, slack_kph);
+  std::size_t e = 0;
+  bool driven_through = false;
+  for (const auto& v : t.vehicles) {
+    while (e + 1 < t.ego.size() && t.ego[e].step < v.step) ++e;
+    const auto& ego = t.ego[e];
+    if (ego.step != v.step || v.direction != 1 || v.lane != ego.lane) continue;
+    driven_through = driven_through || std::abs(v.s_m - ego.s_m) < 0.5 * (v.length_m + ego.length_m);
+  }
+  EXPECT_TRUE(driven_through) << "no vehicle drove through the probe's place";
+}
+void transparent_at_100(const recording::Tables& t) { transparent_at(t, 100.0, 0.5); }
+void transparent_at_85_slowing_for_the_curve(const recording::Tables& t) { transparent_at(t, 83.0, 2.5); }
 
 class EgoVariant : public ::testing::TestWithParam<Variant> {};
 
@@ -73,7 +94,7 @@ TEST_P(EgoVariant, TheWindowKeepsEveryInvariant) {
   ASSERT_NO_FATAL_FAILURE(read_run(scenario_path, dir + "/r.mcap", &run));
   ASSERT_EQ(run.tables.ego.size(), 3001U);
   expect_invariants(run);
-  v.ego_check(run.tables.ego);
+  v.ego_check(run.tables);
   std::filesystem::remove_all(dir);
 }
 
@@ -82,7 +103,9 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, EgoVariant,
                                            Variant{"freeway_ego_fast", 141, mostly_near_180},
                                            Variant{"freeway_ego_slow", 142, below_the_stream},
                                            Variant{"rural_ego_slow", 147, below_the_rural_stream},
-                                           Variant{"rural_ego_fast", 148, overtakes_on_the_rural_road}),
+                                           Variant{"rural_ego_fast", 148, overtakes_on_the_rural_road},
+                                           Variant{"freeway_probe", 149, transparent_at_100},
+                                           Variant{"rural_probe", 150, transparent_at_85_slowing_for_the_curve}),
                          [](const ::testing::TestParamInfo<Variant>& p) { return p.param.scenario; });
 
 }  // namespace

@@ -25,7 +25,7 @@ void expect_invariants(const std::string& csv_dir) {
   const auto t = recording::read_csv(csv_dir, &error);
   ASSERT_TRUE(t) << error;
   EXPECT_GT(t->vehicles.size(), 10000U);
-  for (const auto& c : recording::check_invariants(*t, 4.6, 1.8)) {
+  for (const auto& c : recording::check_invariants(*t, EgoConfig{})) {
     EXPECT_TRUE(c.passed) << c.name << ": " << c.detail;
   }
 }
@@ -70,7 +70,7 @@ TEST(Pipeline, TwoMesoProcessesServeTheOuterRegionsAndPlaysAreFollowed) {
     EXPECT_NE(v.owner, "meso");
   }
   EXPECT_TRUE(front && rear);
-  for (const auto& c : recording::check_invariants(*t, 4.6, 1.8)) EXPECT_TRUE(c.passed) << c.name << ": " << c.detail;
+  for (const auto& c : recording::check_invariants(*t, EgoConfig{})) EXPECT_TRUE(c.passed) << c.name << ": " << c.detail;
   // the director reported the play waiting, then preparing at trigger point 1 (1300 m; the ego
   // starts at 1000 m at 110 km/h), then the outcome at trigger point 2 (1700 m, at about 23 s) or
   // at the end of the handover's wait (6 s): handed over or failed

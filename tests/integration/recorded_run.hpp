@@ -33,7 +33,7 @@ inline void read_run(const std::string& scenario_path, const std::string& record
 // Every invariant of the design holds in the run (no_overlap covers head-on collisions).
 inline void expect_invariants(const RecordedRun& run) {
   const EgoConfig& ego = run.scenario.config.ego;
-  for (const auto& c : recording::check_invariants(run.tables, ego.length_m, ego.width_m)) {
+  for (const auto& c : recording::check_invariants(run.tables, ego)) {
     EXPECT_TRUE(c.passed) << c.name << ": " << c.detail;
   }
 }

@@ -42,6 +42,18 @@ TEST(EgoCore, StopsBehindAStoppedCarWhenItCannotChangeLane) {
   EXPECT_GT(e.s_m, blocker.s_m - 20.0);  // and not miles before it
 }
 
+TEST(EgoCore, ATransparentEgoDrivesThroughAStoppedCar) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.ego.driver.lane_changes = false;
+  sc.ego.transparent = true;
+  ego::EgoCore core(sc);
+  EgoObservation e = core.initial();
+  const ObservedVehicle blocker = stopped_car(sc.ego.start_s_m + 500.0);
+  for (Step k = 1; k <= 1200; ++k) e = core.step(k, {blocker});
+  EXPECT_NEAR(e.speed_mps, sc.ego.driver.desired_speed_mps, 0.5);
+  EXPECT_GT(e.s_m, blocker.s_m + 100.0);
+}
+
 TEST(EgoCore, ChangesLaneAroundAStoppedCarWhenItMay) {
   ScenarioConfig sc = minimal_scenario();
   ego::EgoCore core(sc);

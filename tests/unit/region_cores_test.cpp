@@ -104,6 +104,27 @@ TEST(MicroCore, TheEgoIsALeaderLikeAnyOther) {
   EXPECT_TRUE(passed);
 }
 
+// A transparent ego (scenario ego.transparent, a probe for validating the window) is no leader:
+// the car of TheEgoIsALeaderLikeAnyOther drives through its place without braking. (Meso's
+// vehicles never come that close to the ego: they see it through the same step input.)
+TEST(MicroCore, ATransparentEgoIsNobodysLeader) {
+  ScenarioConfig sc = minimal_scenario();
+  sc.ego.transparent = true;
+  micro::MicroCore core(sc);
+  const EgoObservation ego = ego_at(0, 3000.0, 0.0);
+  run_step(core, 1, ego, {birth(car(sc, 1, 0, 2900.0, 25.0, 25.0), Role::kMicro, Region::kInner)}, {});
+  double slowest_mps = 25.0;
+  bool through = false;
+  for (Step k = 2; k < 100 && core.fleet().size() > 0; ++k) {
+    run_step(core, k, ego, {}, {});
+    const Vehicle& v = core.fleet().vehicles().front();
+    slowest_mps = std::min(slowest_mps, v.speed_mps);
+    through = through || (v.lane == 0 && std::abs(v.s_m - ego.s_m) < 1.0);
+  }
+  EXPECT_TRUE(through) << "the car never reached the ego's place in its lane";
+  EXPECT_GT(slowest_mps, 24.0);
+}
+
 TEST(MicroCore, HandsVehiclesToMesoBeyondTheBorderPlusHysteresis) {
   ScenarioConfig sc = minimal_scenario();
   micro::MicroCore core(sc);

@@ -388,6 +388,23 @@ TEST(ScenarioPlays, EachMistakeIsRefusedWithTheFieldNamed) {
   }
 }
 
+// A transparent ego (a probe the traffic drives through) is for validating the window; a play is
+// staged around an ego the traffic sees, so the two are refused together.
+TEST(ScenarioPlays, ATransparentEgoIsAcceptedWithoutPlaysAndRefusedWithThem) {
+  const auto transparent = [](const std::string& text) {
+    std::string t = text;
+    const std::string ego = "ego { start_s_m: 1000";
+    t.replace(t.find(ego), ego.size(), "ego { transparent: true start_s_m: 1000");
+    return t;
+  };
+  const Loaded alone = load_text(transparent(scenario_with("")), "probe.pbtxt");
+  ASSERT_TRUE(alone.ok()) << all(alone);
+  EXPECT_TRUE(alone.config.ego.transparent);
+  EXPECT_FALSE(load_text(scenario_with(""), "ego.pbtxt").config.ego.transparent);
+  const Loaded with_play = load_text(transparent(scenario_with(play(kRole))), "probe_play.pbtxt");
+  EXPECT_TRUE(has_problem(with_play, "ego.transparent", "cannot have plays")) << all(with_play);
+}
+
 TEST(ScenarioPlays, AValidPlayRaisesNoFollowOnProblems) {
   // An oncoming role's lane changes within the oncoming lanes, forward roles' within the lanes of
   // the ego's direction, a role just far enough from the ego in its lane, slots in other lanes.

@@ -90,7 +90,9 @@ bool EgoCore::stopping(double t_s) {
 
 EgoObservation EgoCore::step(Step step, const std::vector<ObservedVehicle>& world_prev) {
   index_.clear();
-  for (const auto& o : world_prev) add_to_index(index_, o);
+  if (!scenario_.ego.transparent) {
+    for (const auto& o : world_prev) add_to_index(index_, o);
+  }
   add_to_index(index_, self_.direction, self_.lane, self_.target_lane(), self_.id, self_.progress_m(),
                self_.speed_mps, self_.accel_mps2, self_.length_m);
   index_.sort();

@@ -103,7 +103,7 @@ void GeneratorCore::index_world(const StepInput& in) {
     const double ahead = v.speed_mps * dt * static_cast<double>(in.step - h.step);
     add_to_index(index_, v.direction, v.lane, v.lane, v.id, v.progress_m() + ahead, v.speed_mps, 0.0, v.length_m);
   }
-  add_to_index(index_, in.ego);
+  if (!scenario_.ego.transparent) add_to_index(index_, in.ego);
   index_.sort();
 }
 

@@ -149,7 +149,7 @@ void MesoCore::confirm_changes() {
 }
 
 void MesoCore::perceive(const StepInput& in) {
-  build_index(index_, fleet_, in.world_prev, in.ego_prev ? &*in.ego_prev : nullptr);
+  build_index(index_, fleet_, in.world_prev, ego_seen(in, scenario_.ego.transparent));
 }
 
 Ahead MesoCore::ahead_of(const Vehicle& v, bool own_lane_only) const {

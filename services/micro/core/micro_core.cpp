@@ -25,7 +25,7 @@ void MicroCore::adopt(const StepInput& in) {
 }
 
 void MicroCore::perceive(const StepInput& in) {
-  build_index(index_, fleet_, in.world_prev, in.ego_prev ? &*in.ego_prev : nullptr);
+  build_index(index_, fleet_, in.world_prev, ego_seen(in, scenario_.ego.transparent));
 }
 
 std::vector<Decision> MicroCore::decide() const {
