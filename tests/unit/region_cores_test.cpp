@@ -338,24 +338,35 @@ std::vector<Handoff> overtaker_behind_slow_vehicle(const ScenarioConfig& sc, dou
 // On a two-lane rural road a car that overtakes, held up behind a slow truck in the front outer
 // region with the oncoming lane empty, passes it there (driven by micro's model from the start
 // of the pass until it is back in its lane) and stays meso's while it passes.
+// A rural road with a long outer region ahead, a standing ego, and an overtaker behind a slow
+// vehicle 60 m into that region: the first step.
+struct PassAhead {
+  ScenarioConfig sc = [] {
+    ScenarioConfig c = two_lane_rural();
+    c.window.outer_ahead_m = 3000.0;
+    return c;
+  }();
+  meso::MesoCore core{sc, kMesoId};
+  EgoObservation ego = ego_at(0, 3000.0, 0.0);
+  StepOutput out = run_step(
+      core, 1, ego,
+      overtaker_behind_slow_vehicle(sc, WindowBounds::around(3000.0, sc.window).inner_front_m + 60.0, Region::kOuterFront),
+      {});
+  void step(Step k) { out = run_step(core, k, ego, {}, as_world(out, kMesoId)); }
+};
+
 TEST(MesoCore, ACarPassesASlowTruckInTheOuterRegionOfARuralRoad) {
-  ScenarioConfig sc = two_lane_rural();
-  sc.window.outer_ahead_m = 3000.0;
-  meso::MesoCore core(sc, kMesoId);
-  const EgoObservation ego = ego_at(0, 3000.0, 0.0);
-  const WindowBounds w = WindowBounds::around(3000.0, sc.window);
-  StepOutput out =
-      run_step(core, 1, ego, overtaker_behind_slow_vehicle(sc, w.inner_front_m + 60.0, Region::kOuterFront), {});
+  PassAhead p;
   bool used_oncoming_lane = false;
   for (Step k = 2; k < 400; ++k) {
-    out = run_step(core, k, ego, {}, as_world(out, kMesoId));
-    ASSERT_EQ(core.fleet().size(), 2U) << "step " << k;  // neither left (the window is long enough)
-    for (const VehicleReport& r : out.states) used_oncoming_lane |= r.id == 1 && r.target_lane == 1;
+    p.step(k);
+    ASSERT_EQ(p.core.fleet().size(), 2U) << "step " << k;  // neither left (the window is long enough)
+    for (const VehicleReport& r : p.out.states) used_oncoming_lane |= r.id == 1 && r.target_lane == 1;
   }
-  const Vehicle& a = core.fleet().vehicles()[0];
-  const Vehicle& b = core.fleet().vehicles()[1];
+  const Vehicle& a = p.core.fleet().vehicles()[0];
+  const Vehicle& b = p.core.fleet().vehicles()[1];
   EXPECT_TRUE(used_oncoming_lane);
-  EXPECT_EQ(core.counters().overtakings_started, 1U);
+  EXPECT_EQ(p.core.counters().overtakings_started, 1U);
   EXPECT_EQ(a.lane, 0);
   EXPECT_FALSE(a.overtaking.active());
   EXPECT_GT(a.s_m, b.s_m + 10.0);
@@ -365,27 +376,21 @@ TEST(MesoCore, ACarPassesASlowTruckInTheOuterRegionOfARuralRoad) {
 // to a second later: it would keep the braking of its return meanwhile (rural_ego_fast, seed 1:
 // held 4.2 m/s^2 for 0.7 s, braked at 9 m/s^2 at the next plan, and the car behind it was hit).
 TEST(MesoCore, ACarBackFromItsPassIsPlannedAtTheNextStep) {
-  ScenarioConfig sc = two_lane_rural();
-  sc.window.outer_ahead_m = 3000.0;
-  meso::MesoCore core(sc, kMesoId);
-  const EgoObservation ego = ego_at(0, 3000.0, 0.0);
-  const WindowBounds w = WindowBounds::around(3000.0, sc.window);
-  StepOutput out =
-      run_step(core, 1, ego, overtaker_behind_slow_vehicle(sc, w.inner_front_m + 60.0, Region::kOuterFront), {});
+  PassAhead p;
   bool was_passing = false;
   Step back_at = 0;
   for (Step k = 2; k < 400 && back_at == 0; ++k) {
-    out = run_step(core, k, ego, {}, as_world(out, kMesoId));
-    const bool passing = core.fleet().vehicles()[0].overtaking.active();
+    p.step(k);
+    const bool passing = p.core.fleet().vehicles()[0].overtaking.active();
     if (was_passing && !passing) back_at = k;
     was_passing = passing;
   }
   ASSERT_GT(back_at, 0U) << "the pass never ended";
-  const auto steps_per_plan = static_cast<Step>(std::lround(1.0 / sc.step_s));
+  const auto steps_per_plan = static_cast<Step>(std::lround(1.0 / p.sc.step_s));
   ASSERT_NE((back_at + 1) % steps_per_plan, 0U) << "the next step is an update anyway: move the start";
-  const std::uint64_t before = core.counters().alert_plans;
-  run_step(core, back_at + 1, ego, {}, as_world(out, kMesoId));
-  EXPECT_EQ(core.counters().alert_plans, before + 1);
+  const std::uint64_t before = p.core.counters().alert_plans;
+  p.step(back_at + 1);
+  EXPECT_EQ(p.core.counters().alert_plans, before + 1);
 }
 
 // The same pass begun just behind the inner region: the overtaker crosses into it while it passes,
