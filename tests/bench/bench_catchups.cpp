@@ -30,7 +30,6 @@
 #include <map>
 #include <string>
 #include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 #include "cli/args.hpp"
@@ -40,10 +39,20 @@
 #include "scenario/loader.hpp"
 #include "traffic/observed_stream.hpp"
 #include "traffic/road_sim.hpp"
+#include "window_catchups.hpp"
 #include "window_cores.hpp"
 
 namespace entourage {
 namespace {
+
+using bench::in_window;
+using bench::observe_in_window;
+using bench::observe_step;
+using bench::relative_window;
+using bench::Tally;
+using bench::window_drive;
+using bench::window_length_m;
+using bench::with_probe;
 
 struct Options {
   std::string scenario_path = std::string(ENTOURAGE_SOURCE_DIR) + "/scenarios/freeway.pbtxt";
@@ -57,116 +66,6 @@ struct Options {
   double drive_s = 1800.0;
   double probe_kph = -1.0;  // > 0: the window drives' ego is a transparent probe at this speed
 };
-
-// The scenario with its ego a probe (scenario `ego.transparent`): an observer at a set speed (its
-// road's curves and limits allowed) that the traffic drives through and that sees nobody, as the
-// moving-observer relations assume.
-ScenarioConfig with_probe(ScenarioConfig sc, double speed_kph) {
-  sc.ego.transparent = true;
-  sc.ego.driver.use_speed_profile = true;
-  sc.ego.driver.profile = {{0.0, kph_to_mps(speed_kph)}};
-  sc.ego.start_speed_mps = kph_to_mps(speed_kph);
-  sc.ego.driver.lane_changes = false;
-  return sc;
-}
-
-// What one observer (a vehicle of the whole road, or the ego of a window drive) met.
-struct Tally {
-  double passive = 0.0;  // crossings: vehicles passing the observer
-  double active = 0.0;   // vehicles the observer passes
-  double predicted_passive = 0.0;
-  double predicted_active = 0.0;
-  double observed_s = 0.0;
-  double distance_m = 0.0;
-  // Vehicles of its direction crossing the points where its window's edges are: in and out at
-  // the rear, in and out at the front (a vehicle born or retired inside counts as crossing).
-  double rear_in = 0.0;
-  double rear_out = 0.0;
-  double front_in = 0.0;
-  double front_out = 0.0;
-  double vehicle_seconds = 0.0;      // vehicles of its direction in the window, over time
-  double rear_outer_seconds = 0.0;   // of those, in the outer region behind
-  double front_outer_seconds = 0.0;  // and ahead
-  double vehicle_metres = 0.0;       // the distance they drove (Edie's flow: over length and time)
-  double rear_outer_metres = 0.0;    // of that, in the outer region behind
-  double front_outer_metres = 0.0;   // and ahead
-  // Window drives: the oncoming vehicles met, against the prediction, and their distance driven in
-  // the window.
-  double met = 0.0;
-  double predicted_met = 0.0;
-  double oncoming_metres = 0.0;
-
-  void add(const Tally& t) {
-    passive += t.passive;
-    active += t.active;
-    predicted_passive += t.predicted_passive;
-    predicted_active += t.predicted_active;
-    observed_s += t.observed_s;
-    distance_m += t.distance_m;
-    rear_in += t.rear_in;
-    rear_out += t.rear_out;
-    front_in += t.front_in;
-    front_out += t.front_out;
-    vehicle_seconds += t.vehicle_seconds;
-    rear_outer_seconds += t.rear_outer_seconds;
-    front_outer_seconds += t.front_outer_seconds;
-    vehicle_metres += t.vehicle_metres;
-    rear_outer_metres += t.rear_outer_metres;
-    front_outer_metres += t.front_outer_metres;
-    met += t.met;
-    predicted_met += t.predicted_met;
-    oncoming_metres += t.oncoming_metres;
-  }
-};
-
-// The window's edges and regions relative to the observer (its position 0).
-WindowBounds relative_window(const WindowConfig& w) { return WindowBounds::around(0.0, w); }
-double window_length_m(const WindowConfig& w) {
-  const WindowBounds b = relative_window(w);
-  return b.front_edge_m - b.rear_edge_m;
-}
-bool in_window(double rel_m, const WindowBounds& b) { return rel_m >= b.rear_edge_m && rel_m < b.front_edge_m; }
-
-// The observer's own step: its speed against the stream's moving-observer rates.
-void observe_step(Tally& t, double speed_mps, const ObservedStream& stream, double dt) {
-  const double u = std::max(0.0, speed_mps);
-  t.predicted_passive += stream.vehicles_rear_per_s(u) * dt;
-  t.predicted_active += stream.vehicles_front_per_s(u) * dt;
-  t.observed_s += dt;
-  t.distance_m += u * dt;
-}
-
-// Another vehicle of its direction in the observer's window, `rel_m` ahead of it now (behind if
-// negative) and `before_m` the step before (NaN: not there then).
-void observe_in_window(Tally& t, double before_m, double rel_m, double speed_mps, const WindowBounds& w, double dt) {
-  if (in_window(rel_m, w)) {
-    t.vehicle_seconds += dt;
-    t.vehicle_metres += speed_mps * dt;
-    if (rel_m < w.inner_rear_m) {
-      t.rear_outer_seconds += dt;
-      t.rear_outer_metres += speed_mps * dt;
-    }
-    if (rel_m >= w.inner_front_m) {
-      t.front_outer_seconds += dt;
-      t.front_outer_metres += speed_mps * dt;
-    }
-  }
-  if (std::isnan(before_m)) {  // born: in at the nearer edge if inside
-    if (in_window(rel_m, w)) (rel_m < 0.0 ? t.rear_in : t.front_in) += 1.0;
-    return;
-  }
-  const double rear = w.rear_edge_m;
-  const double front = w.front_edge_m;
-  if (before_m < rear && rel_m >= rear) t.rear_in += 1.0;
-  if (before_m >= rear && rel_m < rear) t.rear_out += 1.0;
-  if (before_m >= front && rel_m < front) t.front_in += 1.0;
-  if (before_m < front && rel_m >= front) t.front_out += 1.0;
-}
-
-// A vehicle gone (retired, or off the road's end) whose last position was `before_m`.
-void observe_gone(Tally& t, double before_m, const WindowBounds& w) {
-  if (in_window(before_m, w)) (before_m < 0.0 ? t.rear_out : t.front_out) += 1.0;
-}
 
 struct Observer {
   std::string group;
@@ -251,60 +150,6 @@ std::unordered_map<VehicleId, Observer> observe_whole_road(const ScenarioConfig&
     }
   }
   return observers;
-}
-
-// The initial fill reaches the regions a step after the generator placed it: counting starts after
-// it has settled, or its vehicles would count as born inside the window.
-constexpr Step kFillSteps = 10;
-
-// One drive of the window: the ego stand-in counted as the recording's summary counts it (a vehicle
-// of its direction whose position relative to the ego changes sign between two steps; an oncoming
-// one is met when its position does), the same prediction, from the streams the drive's generator
-// observed.
-Tally window_drive(const ScenarioConfig& sc, std::uint64_t seed, double duration_s) {
-  Tally t;
-  bench::WindowCores cores(sc, seed);
-  const ObservedStream stream(sc, Direction::kForward, StreamObservation{},
-                              observation_seed(generator_seed(seed), Direction::kForward));
-  const ObservedStream oncoming(sc, Direction::kBackward, StreamObservation{},
-                                observation_seed(generator_seed(seed), Direction::kBackward));
-  const WindowBounds w = relative_window(sc.window);
-  std::unordered_map<VehicleId, double> before;
-  std::unordered_map<VehicleId, double> now;
-  std::unordered_set<VehicleId> forward;  // ids of the ego's direction (a gone vehicle's too)
-  const auto steps = static_cast<Step>(duration_s / sc.step_s);
-  for (Step k = 0; k <= steps && !cores.at_road_end(); ++k) {
-    StepInput in = cores.next_input();
-    const bench::StepOutputs out = cores.compute(in);
-    cores.publish(in, out);
-    now.clear();
-    for (const ObservedVehicle& v : cores.world()) {
-      now[v.id] = v.s_m - in.ego.s_m;
-      if (v.direction == Direction::kForward) forward.insert(v.id);
-    }
-    if (k >= kFillSteps) {
-      observe_step(t, in.ego.speed_mps, stream, sc.step_s);
-      t.predicted_met += oncoming.vehicles_oncoming_per_s(std::max(0.0, in.ego.speed_mps)) * sc.step_s;
-      for (const ObservedVehicle& v : cores.world()) {
-        const auto b = before.find(v.id);
-        const bool was = b != before.end();
-        const double rel = now[v.id];
-        if (v.direction == Direction::kBackward) {
-          if (was && b->second >= 0.0 && rel < 0.0) t.met += 1.0;
-          if (in_window(rel, w)) t.oncoming_metres += v.speed_mps * sc.step_s;
-          continue;
-        }
-        if (was && b->second < 0.0 && rel >= 0.0) t.passive += 1.0;
-        if (was && b->second >= 0.0 && rel < 0.0) t.active += 1.0;
-        observe_in_window(t, was ? b->second : std::nan(""), rel, v.speed_mps, w, sc.step_s);
-      }
-      for (const auto& [id, rel] : before) {
-        if (!now.count(id) && forward.count(id)) observe_gone(t, rel, w);
-      }
-    }
-    std::swap(before, now);
-  }
-  return t;
 }
 
 // Ratio of a sum of counts to a sum of predictions, with its standard error from the spread of

@@ -1,6 +1,8 @@
 #pragma once
 // Helpers shared by the core unit tests: a scenario built in code, and the window's ego.
 
+#include <gtest/gtest.h>
+
 #include <string>
 
 #include "scenario/loader.hpp"
@@ -13,10 +15,14 @@ inline ScenarioConfig minimal_scenario() {
   return l.config;
 }
 
-inline ScenarioConfig freeway_scenario() {
-  const auto l = scenario::load_file(std::string(ENTOURAGE_SOURCE_DIR) + "/scenarios/freeway.pbtxt");
+// A shipped scenario (scenarios/NAME.pbtxt); a test that loads one that does not load fails.
+inline ScenarioConfig shipped_scenario(const std::string& name) {
+  const auto l = scenario::load_file(std::string(ENTOURAGE_SOURCE_DIR) + "/scenarios/" + name + ".pbtxt");
+  EXPECT_TRUE(l.ok()) << name;
   return l.config;
 }
+
+inline ScenarioConfig freeway_scenario() { return shipped_scenario("freeway"); }
 
 // A straight road of `lanes_forward` + `lanes_backward` lanes (two-way if rural), 10 km long,
 // 120 km/h, as a driving environment for hand-built situations.

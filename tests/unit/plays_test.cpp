@@ -7,17 +7,13 @@
 #include <ostream>
 #include <string>
 
+#include "core_test_util.hpp"
 #include "play_runs.hpp"
-#include "scenario/loader.hpp"
 
 namespace entourage::bench {
 namespace {
 
-ScenarioConfig shipped(const std::string& name) {
-  const auto loaded = scenario::load_file(std::string(ENTOURAGE_SOURCE_DIR) + "/scenarios/" + name + ".pbtxt");
-  EXPECT_TRUE(loaded.ok()) << name;
-  return loaded.config;
-}
+ScenarioConfig shipped(const std::string& name) { return testing::shipped_scenario(name); }
 
 void expect_safe(const PlayRunResult& r, const std::string& what) {
   EXPECT_EQ(r.overlaps_with_actor, 0) << what;

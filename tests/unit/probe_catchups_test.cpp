@@ -1,0 +1,52 @@
+// A transparent probe's catch-ups in drives of the window (every core in one process) against the
+// moving-observer prediction. A probe is the observer the relations are made for (scenario
+// ego.transparent: nobody sees it, it sees nobody), so these test the window's stream itself: the
+// generation at the edges, meso, the transitions. 48 drives per speed give 0.96 and 0.97 on the
+// rural road and 0.94 on the freeway at 130 km/h (services/generator/README.md, *Catch-ups of a
+// transparent probe*); these shorter runs (fixed seeds) must come within 15 %: a guard against a
+// gross error in the stream, not a measure (the generator's queue defect of stop 24, which cost
+// a slow freeway probe a tenth of its passive catch-ups, passed them: its own test is in
+// generator_test.cpp). The freeway's slow probe (0.81) and the probe at the stream's speed (0.89
+// / 0.83) are not within 10 % yet and have no test here.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core_test_util.hpp"
+#include "window_catchups.hpp"
+
+namespace entourage::bench {
+namespace {
+
+ScenarioConfig shipped(const std::string& name) { return testing::shipped_scenario(name); }
+
+// Seeds 1..drives, 20 minutes each, summed.
+Tally probe_drives(const std::string& scenario, double speed_kph, int drives) {
+  const ScenarioConfig sc = with_probe(shipped(scenario), speed_kph);
+  Tally total;
+  for (int seed = 1; seed <= drives; ++seed) total.add(window_drive(sc, static_cast<std::uint64_t>(seed), 1200.0));
+  return total;
+}
+
+constexpr double kShortRunTolerance = 0.15;
+
+TEST(ProbeCatchUps, OnTheRuralRoadASlowProbeIsPassedAsOftenAsPredicted) {
+  const Tally t = probe_drives("rural", 70.0, 16);
+  ASSERT_GT(t.predicted_passive, 200.0);
+  EXPECT_NEAR(t.passive / t.predicted_passive, 1.0, kShortRunTolerance) << t.passive << " of " << t.predicted_passive;
+}
+
+TEST(ProbeCatchUps, OnTheRuralRoadAFastProbePassesAsManyAsPredicted) {
+  const Tally t = probe_drives("rural", 100.0, 16);
+  ASSERT_GT(t.predicted_active, 400.0);
+  EXPECT_NEAR(t.active / t.predicted_active, 1.0, kShortRunTolerance) << t.active << " of " << t.predicted_active;
+}
+
+TEST(ProbeCatchUps, OnTheFreewayAFastProbePassesAsManyAsPredicted) {
+  const Tally t = probe_drives("freeway", 130.0, 12);
+  ASSERT_GT(t.predicted_active, 1000.0);
+  EXPECT_NEAR(t.active / t.predicted_active, 1.0, kShortRunTolerance) << t.active << " of " << t.predicted_active;
+}
+
+}  // namespace
+}  // namespace entourage::bench
