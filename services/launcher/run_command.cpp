@@ -92,8 +92,11 @@ class Run {
   std::vector<std::string> peers_;     // every service taking part (external ego excluded)
   std::string logs_dir_;
   std::vector<std::unique_ptr<Child>> children_;
-  std::unique_ptr<dds::Node> node_;
+  // The monitor before the node: members go in reverse order, and the node's readers call into
+  // the monitor until the node is gone (a step report arriving from an external simulator while
+  // the node was deleted ran the freed monitor's handler: the launcher hung for good).
   std::unique_ptr<Monitor> monitor_;
+  std::unique_ptr<dds::Node> node_;
   Clock::time_point started_;
   Clock::time_point last_progress_;
   Step last_progress_step_ = 0;
@@ -311,8 +314,8 @@ int Run::execute() {
   if (outcome == Outcome::kInterrupted) std::cout << (tty_ ? "\n" : "") << "entourage: interrupted; stopping the services\n";
   const bool clean = stop_all();
   ReportInput in{opt_.record, logs_dir_, sc_.config, wall_s_, opt_.realtime, monitor_->latencies_ms()};
+  node_.reset();  // first: its readers' handlers are the monitor's
   monitor_.reset();
-  node_.reset();
   const bool report_ok = print_report(in, std::cout);
   if (outcome == Outcome::kFailed || !clean) {
     std::cerr << "entourage: the run failed; see the logs in " << logs_dir_ << "/\n";
