@@ -374,12 +374,14 @@ void GeneratorCore::place(const StepInput& in, StepOutput& out) {
     // Every waiting platoon gets its turn, in the order they arrived: one that cannot enter yet
     // does not hold up those behind it, which may find room in another lane (as faster traffic
     // passes a slow vehicle before the edge reaches either).
-    std::deque<Pending> waiting;
-    for (Pending& pending : s.queue) {
-      const bool done = ahead ? place_from_ahead(s, pending, w) : place_one_by_one(s, pending, u, w, in.step, out);
-      if (!done) waiting.push_back(std::move(pending));
+    auto waiting = s.queue.begin();  // those still waiting are moved up, in order, in place
+    for (auto it = s.queue.begin(); it != s.queue.end(); ++it) {
+      const bool done = ahead ? place_from_ahead(s, *it, w) : place_one_by_one(s, *it, u, w, in.step, out);
+      if (done) continue;
+      if (waiting != it) *waiting = std::move(*it);
+      ++waiting;
     }
-    s.queue = std::move(waiting);
+    s.queue.erase(waiting, s.queue.end());
     counters_.waited_steps += s.queue.size();
   }
 }
