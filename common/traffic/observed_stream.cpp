@@ -78,9 +78,11 @@ ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, co
     }
     std::sort(snap.begin(), snap.end(), [](const auto& a, const auto& b) { return a.offset_m < b.offset_m; });
     vehicles += snap.size();
+    for (const StreamVehicle& sv : snap) note_speed_ratio(sv.vehicle);
     cut_into_platoons(snap, lanes, how.platoon_headway_s, &platoons_);
     snapshots_.push_back(std::move(snap));
   }
+  for (auto& pairs : speed_ratio_by_desired_) std::sort(pairs.begin(), pairs.end());
   const double observed_length = sampled_length_m_ * static_cast<double>(snapshots_.size());
   double carried = 0.0;  // sum over platoons of size x speed
   for (const auto& p : platoons_) carried += static_cast<double>(p.members.size()) * p.speed_mps;
@@ -102,6 +104,29 @@ ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, co
     sorted_speeds_mps_.push_back(speed);
     running_.push_back(sum);
   }
+}
+
+void ObservedStream::note_speed_ratio(const Vehicle& v) {
+  const double desired = v.driver.desired_speed_mps();
+  if (!(desired > 0.0)) return;
+  if (speed_ratio_by_desired_.size() <= v.type_index) speed_ratio_by_desired_.resize(v.type_index + 1u);
+  speed_ratio_by_desired_[v.type_index].emplace_back(desired, v.speed_mps / desired);
+}
+
+double ObservedStream::typical_speed_mps(const Vehicle& v) const {
+  const double desired = v.driver.desired_speed_mps();
+  if (v.type_index >= speed_ratio_by_desired_.size()) return desired;
+  const auto& pairs = speed_ratio_by_desired_[v.type_index];
+  if (pairs.empty()) return desired;
+  // The kTypicalNeighbours closest in desired speed: a window of that many around the place
+  // `desired` would be sorted in, moved inside the range.
+  const auto at = std::lower_bound(pairs.begin(), pairs.end(), std::make_pair(desired, 0.0)) - pairs.begin();
+  const auto n = static_cast<std::ptrdiff_t>(pairs.size());
+  const auto count = std::min<std::ptrdiff_t>(kTypicalNeighbours, n);
+  const auto first = std::clamp<std::ptrdiff_t>(at - count / 2, 0, n - count);
+  double ratio_sum = 0.0;
+  for (std::ptrdiff_t i = first; i < first + count; ++i) ratio_sum += pairs[static_cast<std::size_t>(i)].second;
+  return desired * ratio_sum / static_cast<double>(count);
 }
 
 double ObservedStream::as_rate_per_s(double sum_over_platoons) const {

@@ -18,7 +18,9 @@
 // the demand (3-13 % below it on the rural road, within 2 % on the freeway), and a target from the
 // unscaled density disagreed with the arrivals by as much.
 
+#include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/random.hpp"
@@ -73,6 +75,12 @@ class ObservedStream {
   double sample_flow_per_s() const { return sample_flow_; }  // what the snapshots themselves carried
   double platoon_density_per_m() const { return platoon_density_; }
   double mean_speed_mps() const;  // space mean over vehicles
+  // The speed a driver like `v` (its type and basic desired speed) has in the stream, on average:
+  // its desired speed times the mean ratio of speed to desired speed of the observed vehicles of
+  // its type closest to it in desired speed (kTypicalNeighbours of them). A driver drives below
+  // the speed it wishes in interacting traffic, fast ones more so. Its desired speed when the
+  // stream has no vehicle of its type.
+  double typical_speed_mps(const Vehicle& v) const;
   const std::vector<Platoon>& platoons() const { return platoons_; }
 
   double rate_rear_per_s(double window_speed_mps) const;  // platoons per second
@@ -106,6 +114,8 @@ class ObservedStream {
   // A sum over the observed platoons of a speed (per platoon or per vehicle) as a rate of the
   // stream that carries the demand: its mean per platoon times the platoons per metre.
   double as_rate_per_s(double sum_over_platoons) const;
+  void note_speed_ratio(const Vehicle& v);
+  static constexpr std::ptrdiff_t kTypicalNeighbours = 50;
   template <typename Weight>
   const Platoon& draw(Random& rng, Weight w) const;
 
@@ -125,6 +135,9 @@ class ObservedStream {
     double members_speed = 0.0;
   };
   std::vector<double> sorted_speeds_mps_;
+  // Per vehicle type (index): (basic desired speed, speed / desired speed) of every observed
+  // vehicle, sorted by desired speed.
+  std::vector<std::vector<std::pair<double, double>>> speed_ratio_by_desired_;
   std::vector<SpeedSums> running_;
   SpeedSums below(double u) const;  // over the platoons slower than u
 };

@@ -8,6 +8,8 @@
 #include "core_test_util.hpp"
 #include "generator/core/generator_core.hpp"
 #include "road/window.hpp"
+#include "traffic/driver_draw.hpp"
+#include "traffic/handoff.hpp"
 #include "traffic/observed_stream.hpp"
 #include "traffic/stream.hpp"
 
@@ -99,6 +101,26 @@ TEST(Generator, TheObservedStreamIsSlowerThanItsDriversWishAndCarriesTheDemand) 
   EXPECT_GT(trucks_behind, 0.0);  // platoons exist
 }
 
+TEST(Generator, ADriverIsSlowerInTheStreamThanItWishesAFastOneMoreSo) {
+  const ScenarioConfig sc = freeway_scenario();
+  const ObservedStream s(sc, Direction::kForward, StreamObservation{}, 3);
+  const auto typical = [&](std::uint8_t type, double desired_mps) {
+    Vehicle v;
+    v.type_index = type;
+    v.driver.car_following.idm.desired_speed_mps = desired_mps;
+    return s.typical_speed_mps(v);
+  };
+  const double slow = typical(0, 27.0);  // cars: 97 and 144 km/h
+  const double fast = typical(0, 40.0);
+  EXPECT_LT(slow, 27.0);
+  EXPECT_LT(fast, 40.0);
+  EXPECT_GT(fast, slow + 3.0);                // a fast driver is still faster
+  EXPECT_LT(fast / 40.0, slow / 27.0);        // but held up more
+  const double truck = typical(1, 24.5);      // trucks keep near their 88 km/h
+  EXPECT_GT(truck, 0.9 * 24.5);
+  EXPECT_LE(truck, 24.5);
+}
+
 TEST(Generator, ObservesItsStreamsWithTheSeedsARecordingsReaderDerives) {
   const ScenarioConfig sc = freeway_scenario();
   const std::uint64_t run_seed = 7;
@@ -116,6 +138,55 @@ ScenarioConfig unregulated() {
   ScenarioConfig sc = freeway_scenario();
   sc.demand_regulation_gain = 0.0;
   return sc;
+}
+
+TEST(Generator, ACarThatLeavesTheWindowHeldUpGoesOnAheadAtItsStreamSpeed) {
+  const ScenarioConfig sc = unregulated();
+  GeneratorCore g(sc, 3);
+  const double u = 20.0;
+  double s = 5000.0;
+  StepInput in;
+  in.ego = ego_at(0, s, u);
+  g.step(in);  // the fill, front zone included
+  const WindowBounds w = WindowBounds::around(s, sc.window);
+  // The lane with the most room beyond the edge, so that nothing of the zone holds the car up.
+  double room[2] = {1e9, 1e9};
+  for (const Vehicle& v : g.front_zone().vehicles()) {
+    room[v.lane] = std::min(room[v.lane], v.progress_m() - 0.5 * v.length_m - w.front_edge_m);
+  }
+  const int lane = room[1] > room[0] ? 1 : 0;
+  ASSERT_GT(room[lane], 150.0) << "a zone vehicle would hold the car up: choose another seed";
+  const auto left_ahead = [&](VehicleId id, int in_lane, double s_m, double speed_mps, double desired_mps) {
+    Random rng(id);
+    const DriverParams d = draw_driver(sc.vehicle_types[0], desired_mps, id, rng);
+    const Vehicle v = make_vehicle(id, 0, sc.vehicle_types[0], Direction::kForward, in_lane, s_m, speed_mps, d);
+    return make_handoff(v, 0, ServiceId{Role::kMeso, 0}, Role::kGenerator, Region::kOutside, HandoffReason::kLeftWindow);
+  };
+  const VehicleId held_up = 9000001;  // left at 21 m/s, wishes 38
+  const VehicleId fast = 9000002;     // left at 34 m/s, wishes 30: faster than it usually is
+  in.handoffs = {left_ahead(held_up, lane, w.front_edge_m + 5.0, 21.0, 38.0),
+                 left_ahead(fast, 1 - lane, w.front_edge_m + 5.0, 34.0, 30.0)};
+  Vehicle probe;
+  probe.type_index = 0;
+  probe.driver.car_following.idm.desired_speed_mps = 38.0;
+  const double typical = g.stream(Direction::kForward).typical_speed_mps(probe);
+  ASSERT_GT(typical, 21.0 + 5.0);
+  for (int k = 1; k <= 150; ++k) {  // 15 s
+    s += u * sc.step_s;
+    in.step = static_cast<Step>(k);
+    in.ego = ego_at(in.step, s, u);
+    g.step(in);
+    in.handoffs.clear();
+  }
+  const auto speed_of = [&](VehicleId id) {
+    for (const Vehicle& v : g.front_zone().vehicles()) {
+      if (v.id == id) return v.speed_mps;
+    }
+    ADD_FAILURE() << "vehicle " << id << " not in the front zone";
+    return 0.0;
+  };
+  EXPECT_NEAR(speed_of(held_up), typical, 0.1) << "kept the speed it left the window with";
+  EXPECT_NEAR(speed_of(fast), 34.0, 0.1) << "slowed below its exit speed: it would fall back into the window";
 }
 
 TEST(Generator, ArrivalsMatchTheMovingObserverRates) {

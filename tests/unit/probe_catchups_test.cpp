@@ -6,8 +6,9 @@
 // transparent probe*); these shorter runs (fixed seeds) must come within 15 %: a guard against a
 // gross error in the stream, not a measure (the generator's queue defect of stop 24, which cost
 // a slow freeway probe a tenth of its passive catch-ups, passed them: its own test is in
-// generator_test.cpp). The freeway's slow probe (0.81) and the probe at the stream's speed (0.89
-// / 0.83) are not within 10 % yet and have no test here.
+// generator_test.cpp). The freeway's slow probe, 0.90 with 48 drives since stop 25's front zone
+// (0.81 before, which this test's 8 drives would have failed), is tested here too; the freeway
+// probe at the stream's speed (0.92 / 0.84) is not within 10 % yet and has no test here.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -40,6 +41,12 @@ TEST(ProbeCatchUps, OnTheRuralRoadAFastProbePassesAsManyAsPredicted) {
   const Tally t = probe_drives("rural", 100.0, 16);
   ASSERT_GT(t.predicted_active, 400.0);
   EXPECT_NEAR(t.active / t.predicted_active, 1.0, kShortRunTolerance) << t.active << " of " << t.predicted_active;
+}
+
+TEST(ProbeCatchUps, OnTheFreewayASlowProbeIsPassedAsOftenAsPredicted) {
+  const Tally t = probe_drives("freeway", 80.0, 8);
+  ASSERT_GT(t.predicted_passive, 800.0);
+  EXPECT_NEAR(t.passive / t.predicted_passive, 1.0, kShortRunTolerance) << t.passive << " of " << t.predicted_passive;
 }
 
 TEST(ProbeCatchUps, OnTheFreewayAFastProbePassesAsManyAsPredicted) {

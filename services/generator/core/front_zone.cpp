@@ -14,6 +14,11 @@ void FrontZone::add(const Vehicle& v) {
   stream_speed_mps_[v.id] = v.speed_mps;
 }
 
+void FrontZone::add(const Vehicle& v, double stream_speed_mps) {
+  add(v);
+  stream_speed_mps_[v.id] = stream_speed_mps;
+}
+
 void FrontZone::move(const LaneIndex& index, double dt_s) {
   std::vector<double> next;
   next.reserve(fleet_.size());

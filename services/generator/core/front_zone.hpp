@@ -6,8 +6,9 @@
 // them, the front-most vehicles of each lane had no leader, sped up to their desired speeds and
 // left, and the window lost a third of its density in the ego's direction within minutes.
 //
-// A vehicle here keeps the speed it had in the observed stream, slowing only to keep a safe gap to
-// whatever is ahead of it (a vehicle of the zone or of the window):
+// A vehicle here drives at its stream speed (the speed it had in the observed stream; for one that
+// left the window ahead, the speed the generator gives it: GeneratorCore::adopt_left_ahead), slowing
+// only to keep a safe gap to whatever is ahead of it (a vehicle of the zone or of the window):
 //
 //   v_next = clamp(min(v_stream, v_leader + sqrt(2 b (gap - s0)), (gap - s0) / T),
 //                  v - b_max dt, v + a dt), at least 0
@@ -24,6 +25,8 @@ class FrontZone {
  public:
   // Adds a vehicle (id, lane, position and speed set); its present speed is its stream speed.
   void add(const Vehicle& v);
+  // Adds a vehicle that will drive at `stream_speed_mps` (from its present speed, at its rates).
+  void add(const Vehicle& v, double stream_speed_mps);
   // Moves every vehicle of the zone over one step, seeing the others (zone and window) in `index`.
   void move(const LaneIndex& index, double dt_s);
   // Removes and returns the vehicles the front edge (at progress `edge_m`) has reached.

@@ -49,7 +49,7 @@ std::size_t GeneratorCore::queued() const {
 
 StepOutput GeneratorCore::step(const StepInput& in) {
   StepOutput out;
-  for (const Handoff& h : inbox_.accept(in.handoffs)) zone_.add(h.vehicle);  // left the window ahead
+  for (const Handoff& h : inbox_.accept(in.handoffs)) adopt_left_ahead(h.vehicle);
   perceive(in);
   zone_.move(index_, scenario_.step_s);
   index_world(in);
@@ -332,6 +332,10 @@ bool GeneratorCore::place_from_ahead(const EdgeStream& s, const Pending& pending
     return true;
   }
   return false;
+}
+
+void GeneratorCore::adopt_left_ahead(const Vehicle& v) {
+  zone_.add(v, std::max(v.speed_mps, stream(v.direction).typical_speed_mps(v)));
 }
 
 void GeneratorCore::add_to_zone(const Vehicle& v) {
