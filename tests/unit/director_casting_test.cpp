@@ -16,10 +16,9 @@ namespace entourage::director {
 namespace {
 
 using testing::at_trigger2;
+using testing::kInf;
 using testing::lead_play;
 using testing::vehicle;
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 TEST(Assignment, FindsTheLeastTotalCostWhereFirstComeWouldNot) {
   // Greedy (role 0 first takes its cheapest, vehicle 0) pays 1 + 100; the optimum pays 2 + 1.

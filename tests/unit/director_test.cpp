@@ -18,10 +18,9 @@ namespace entourage::director {
 namespace {
 
 using testing::at_trigger2;
+using testing::kInf;
 using testing::lead_play;
 using testing::vehicle;
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // --- Start-time estimation
 

@@ -1,11 +1,16 @@
 #pragma once
 // Helpers shared by the director's unit tests: a vehicle as the director sees it, a play with
-// one lead role, and the aim at its trigger point 2.
+// one lead role, the aim at its trigger point 2, and infinity (a time to collision never reached,
+// a role a vehicle cannot play).
+
+#include <limits>
 
 #include "director/core/play.hpp"
 #include "director/core/stage.hpp"
 
 namespace entourage::testing {
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 inline ObservedVehicle vehicle(VehicleId id, double s, double speed, int lane = 0, Direction dir = Direction::kForward) {
   ObservedVehicle v;
