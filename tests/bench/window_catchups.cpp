@@ -10,9 +10,6 @@
 
 namespace entourage::bench {
 
-// The scenario with its ego a probe (scenario `ego.transparent`): an observer at a set speed (its
-// road's curves and limits allowed) that the traffic drives through and that sees nobody, as the
-// moving-observer relations assume.
 ScenarioConfig with_probe(ScenarioConfig sc, double speed_kph) {
   sc.ego.transparent = true;
   sc.ego.driver.use_speed_profile = true;
@@ -22,7 +19,6 @@ ScenarioConfig with_probe(ScenarioConfig sc, double speed_kph) {
   return sc;
 }
 
-// The window's edges and regions relative to the observer (its position 0).
 WindowBounds relative_window(const WindowConfig& w) { return WindowBounds::around(0.0, w); }
 double window_length_m(const WindowConfig& w) {
   const WindowBounds b = relative_window(w);
@@ -30,7 +26,6 @@ double window_length_m(const WindowConfig& w) {
 }
 bool in_window(double rel_m, const WindowBounds& b) { return rel_m >= b.rear_edge_m && rel_m < b.front_edge_m; }
 
-// The observer's own step: its speed against the stream's moving-observer rates.
 void observe_step(Tally& t, double speed_mps, const ObservedStream& stream, double dt) {
   const double u = std::max(0.0, speed_mps);
   t.predicted_passive += stream.vehicles_rear_per_s(u) * dt;
@@ -39,8 +34,6 @@ void observe_step(Tally& t, double speed_mps, const ObservedStream& stream, doub
   t.distance_m += u * dt;
 }
 
-// Another vehicle of its direction in the observer's window, `rel_m` ahead of it now (behind if
-// negative) and `before_m` the step before (NaN: not there then).
 void observe_in_window(Tally& t, double before_m, double rel_m, double speed_mps, const WindowBounds& w, double dt) {
   if (in_window(rel_m, w)) {
     t.vehicle_seconds += dt;
@@ -66,16 +59,10 @@ void observe_in_window(Tally& t, double before_m, double rel_m, double speed_mps
   if (before_m < front && rel_m >= front) t.front_out += 1.0;
 }
 
-// A vehicle gone (retired, or off the road's end) whose last position was `before_m`.
 void observe_gone(Tally& t, double before_m, const WindowBounds& w) {
   if (in_window(before_m, w)) (before_m < 0.0 ? t.rear_out : t.front_out) += 1.0;
 }
 
-
-// One drive of the window: the ego stand-in counted as the recording's summary counts it (a vehicle
-// of its direction whose position relative to the ego changes sign between two steps; an oncoming
-// one is met when its position does), the same prediction, from the streams the drive's generator
-// observed.
 Tally window_drive(const ScenarioConfig& sc, std::uint64_t seed, double duration_s) {
   Tally t;
   bench::WindowCores cores(sc, seed);

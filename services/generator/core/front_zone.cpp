@@ -7,15 +7,12 @@
 
 namespace entourage::generator {
 
-void FrontZone::add(const Vehicle& v) {
+void FrontZone::add(const Vehicle& v) { add(v, v.speed_mps); }
+
+void FrontZone::add(const Vehicle& v, double stream_speed_mps) {
   Handoff h;
   h.vehicle = v;
   fleet_.adopt(h, 0, 0.0);
-  stream_speed_mps_[v.id] = v.speed_mps;
-}
-
-void FrontZone::add(const Vehicle& v, double stream_speed_mps) {
-  add(v);
   stream_speed_mps_[v.id] = stream_speed_mps;
 }
 
