@@ -42,6 +42,13 @@ double accel_behind(const Vehicle& v, const Occupant* leader, bool* emergency = 
 // before the gap closes (0 if not closing).
 double stopping_decel_mps2(double gap_m, double closing_mps);
 
+// An overtaker of the other direction in v's own lane that is already moving back into its own
+// lane (or calling its pass off) and will be out of v's lane before they meet, `gap_m` ahead at
+// `closing_mps`: no obstacle. (Braked for, a car at 28 m/s braked at 9 m/s^2 for one 230 m ahead
+// that was a second from the end of its return: rural_ego_slow, seed 1, stop 26.)
+bool out_of_the_way_before_meeting(const Vehicle& v, const Occupant& oncoming, int lane, double gap_m,
+                                   double closing_mps, const DrivingEnvironment& env);
+
 // The deceleration that keeps `min_gap_m` to a leader `gap_m` ahead when closing in on it at
 // `closing_mps`, both at constant speed (0 if not closing); infinite inside the standstill gap.
 double keep_gap_decel_mps2(double gap_m, double min_gap_m, double closing_mps);

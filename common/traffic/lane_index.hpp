@@ -25,6 +25,7 @@ struct Occupant {
   double accel_mps2 = 0.0;
   double length_m = 0.0;
   int signal = 0;  // indicator on towards the lane to its left (+1) or right (-1), 0 off
+  bool leaving = false;  // moving sideways out of this lane (the lane it is in until the move ends)
 };
 
 // The `signal` of an indicator (0 off, 1 left, 2 right).

@@ -118,6 +118,24 @@ OvertakingStep start_return(OvertakingStep out, const Vehicle& v, const DrivingE
   return out;
 }
 
+// Still moving out: the driver who sees that the pass can no longer be made pulls back into its
+// own lane the way it came, a return from the oncoming lane that starts where the move out is (the
+// quintic profile run backwards: same place, the lateral speed turned round, back in the time it
+// took to get there). (Reviewed only once out, a pass begun in the step an oncoming vehicle entered
+// 62 m ahead went on out for 2 s while both braked, the oncoming one far beyond its limit:
+// rural_ego_slow, seed 1, stop 26.)
+OvertakingStep call_off_move_out(OvertakingStep out, const Vehicle& v) {
+  LaneChangeState& lc = out.lane_change;
+  lc = v.lane_change;
+  std::swap(lc.from_lane, lc.to_lane);  // commit puts it in from_lane: the oncoming lane it leaves
+  lc.phase_elapsed_s = std::max(0.0, lc.duration_s - lc.phase_elapsed_s);
+  out.lateral_start = true;
+  out.state.phase = OvertakingPhase::kReturning;
+  ++out.state.aborted;
+  out.aborted = true;
+  return out;
+}
+
 OvertakingStep start_abort(OvertakingStep out) {
   out.state.phase = OvertakingPhase::kAborting;
   ++out.state.aborted;
@@ -157,7 +175,9 @@ OvertakingStep continue_pass(const Vehicle& v, const LaneIndex& index, const Dri
   const OvertakingSituation s = pass_situation(v, *overtaken, index, env, desired_speed_mps);
   const PassReview review = review_pass(p, s);
   out.clear_of_oncoming = review.safe_to_finish;
-  if (v.lane_change.active()) return out;  // still moving out
+  if (v.lane_change.active()) {  // still moving out
+    return review.action == PassAction::kAbort ? call_off_move_out(out, v) : out;
+  }
   switch (review.action) {
     case PassAction::kReturn:  // far enough ahead, and room in front of the overtaken vehicle
       if (can_return(v, index, env)) return start_return(out, v, env);

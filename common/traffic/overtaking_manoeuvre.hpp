@@ -6,7 +6,7 @@
 // and back as lateral movements between the own lane and the oncoming lane, the pass reviewed at
 // every step, the return into any gap of the own lane that fits kinematically (a platoon's gaps
 // included), and the abort: drop back towards the nearest gap that takes the overtaker and return
-// as soon as the gap beside fits.
+// as soon as the gap beside fits; an abort while still moving out pulls back in the way it came.
 //
 // Only drivers whose lane-change model is "overtaking", in the leftmost lane of their direction, on
 // a road with oncoming traffic (DrivingEnvironment::two_way) overtake.

@@ -12,6 +12,7 @@
 #include "traffic/driving.hpp"
 #include "traffic/entry.hpp"
 #include "traffic/lane_changes.hpp"
+#include "traffic/lateral.hpp"
 #include "traffic/overtaking_manoeuvre.hpp"
 #include "traffic/world.hpp"
 
@@ -180,6 +181,98 @@ TEST(Overtaking, AbortsWhenAnOncomingCarAppearsAndReturnsBehindWithoutAHeadOnCol
   EXPECT_GT(w.min_clearance_m, 0.0);
 }
 
+// A human driver (a 0.6 s reaction time, no perception errors) returning from a pass in lane 0 at
+// `speed_mps`, that decided `remembered_mps2` over the last second.
+Vehicle human_car_cutting_back_in(double speed_mps, double remembered_mps2) {
+  Vehicle me = car(1, Direction::kForward, 0, 1000.0, speed_mps, 27.0, LaneChangeModel::kOvertaking);
+  me.driver.car_following.human_driver = true;
+  me.driver.car_following.hdm.reaction_time_s = 0.6;
+  me.driver.car_following.hdm.distance_error = 0.0;
+  me.driver.car_following.hdm.inverse_ttc_error_per_s = 0.0;
+  for (int i = 0; i < 10; ++i) me.hdm_memory.push(remembered_mps2);
+  me.overtaking.phase = OvertakingPhase::kReturning;
+  me.overtaking.started = 1;
+  return me;
+}
+
+// rural_ego_slow, seed 1 (stop 26): a pass began in the step an oncoming car entered 62 m ahead;
+// reviewed only once out, the overtaker went on moving out for 2 s while both braked, the oncoming
+// one (meso) far beyond any brakes. Seeing it on the way out, the driver pulls back in the way it
+// came: no sideways jump, never across, back behind the truck, nobody touched.
+TEST(Overtaking, APassIsCalledOffOnTheWayOutWhenAnOncomingCarAppears) {
+  const ScenarioConfig sc = rural();
+  const Road road(sc.road);
+  MiniWorld w(sc);
+  w.vehicles.push_back(car(1, Direction::kForward, 0, 1000.0, 18.0, 25.0, LaneChangeModel::kOvertaking));
+  w.vehicles.push_back(truck(2, Direction::kForward, 1030.0, 16.0));
+  while (!w.get(1).lane_change.moving()) {
+    w.step();
+    ASSERT_LT(w.t(), 20.0) << "the pass never started";
+  }
+  w.step();  // a step on its way out
+  w.vehicles.push_back(car(3, Direction::kBackward, 0, w.get(1).s_m + 62.0, 25.0, 25.0, LaneChangeModel::kNone));
+  double offset_m = lateral_offset_m(road, w.get(1));
+  const double start_offset_m = lateral_offset_m(road, Direction::kForward, 0, 0, 0.0);
+  const double lane_width_m = std::abs(lateral_offset_m(road, Direction::kForward, 1, 1, 0.0) - start_offset_m);
+  double widest_m = 0.0;
+  double biggest_step_m = 0.0;
+  while (w.get(1).overtaking.active()) {
+    w.step();
+    const double now_m = lateral_offset_m(road, w.get(1));
+    biggest_step_m = std::max(biggest_step_m, std::abs(now_m - offset_m));
+    widest_m = std::max(widest_m, std::abs(now_m - start_offset_m));
+    offset_m = now_m;
+    ASSERT_LT(w.t(), 40.0) << "still overtaking";
+  }
+  EXPECT_EQ(w.get(1).overtaking.aborted, 1U);
+  EXPECT_EQ(w.get(1).lane, 0);
+  EXPECT_DOUBLE_EQ(lateral_offset_m(road, w.get(1)), start_offset_m);
+  EXPECT_LT(widest_m, 0.25 * lane_width_m) << "it went on out";
+  EXPECT_LT(biggest_step_m, 0.05 * lane_width_m) << "a sideways jump";
+  EXPECT_LT(w.get(1).s_m, w.get(2).s_m);
+  EXPECT_GT(w.min_clearance_m, 0.0);
+}
+
+// rural_ego_slow, seed 1 (stop 26): a car at 28 m/s braked at 9 m/s^2 for an oncoming overtaker
+// 230 m ahead that was nearly back in its own lane. One still passing there is braked for.
+TEST(OncomingReaction, NobodyBrakesForAnOvertakerThatWillBeBackInItsLaneBeforeTheyMeet) {
+  const ScenarioConfig sc = rural();
+  const DrivingEnvironment env(sc);
+  const Vehicle me = car(1, Direction::kBackward, 0, 6110.0, 28.0, 28.0, LaneChangeModel::kNone);
+  for (const bool returning : {true, false}) {
+    LaneIndex index(1, 1);
+    add_to_index(index, Direction::kBackward, 0, 0, 1, me.progress_m(), 28.0, 0.0, 4.5);
+    // forward lane 1 is the backward direction's lane 0
+    add_to_index(index, Direction::kForward, 1, returning ? 0 : 1, 2, 5878.0, 25.0, 0.0, 4.5);
+    index.sort();
+    const Decision d = decide(me, index, env);
+    if (returning) {
+      EXPECT_GT(d.accel_mps2, -0.5) << "braked for one moving back";
+    } else {
+      EXPECT_LT(d.accel_mps2, -2.0) << "did not brake for one still in its lane";
+    }
+  }
+}
+
+// rural_ego_slow, seed 1 (stop 26): a human driver cut back in 9.6 m behind a truck, closing at
+// 7.5 m/s; its reaction delay still applied the gentler braking of a moment before (3.0 m/s^2 where
+// 3.6 were needed) and it came within 1.6 m of the truck. The return was planned with that braking.
+TEST(Overtaking, ACarCuttingBackInBrakesAtOnceForTheGapItNeeds) {
+  const ScenarioConfig sc = rural();
+  const Vehicle me = human_car_cutting_back_in(24.6, -3.0);
+  const double truck_length_m = 16.5;
+  const double gap_m = 9.6;
+  LaneIndex index(1, 1);
+  add_to_index(index, Direction::kForward, 0, 0, 1, 1000.0, 24.6, -3.0, 4.5);
+  add_to_index(index, Direction::kForward, 0, 0, 2, 1000.0 + 0.5 * (4.5 + truck_length_m) + gap_m, 17.1, 0.0,
+               truck_length_m);
+  index.sort();
+  const Decision d = decide(me, index, DrivingEnvironment(sc));
+  const double closing_mps = 24.6 - 17.1;
+  const double keep_gap_mps2 = closing_mps * closing_mps / (2.0 * (gap_m - me.driver.car_following.idm.min_gap_m));
+  EXPECT_LE(d.accel_mps2, -keep_gap_mps2 + 1e-9);
+}
+
 TEST(Overtaking, AnAbortingOvertakerFacingAnOncomingCarAsksNoMoreOfATruckBehindThanItsBrakesGive) {
   // A 30-minute rural drive: a car aborting in the oncoming lane, nearly stopped face to face with
   // an oncoming car, cut back in 9 m ahead of a truck closing at 11 m/s; keeping the car's 2 m
@@ -321,6 +414,32 @@ TEST(Overtaking, ACarCuttingBackInBrakesForWhatItsLeaderIsDoingNotOnlyForItsSpee
   const Decision d = decide(me, index, DrivingEnvironment(sc));
   const double room_m = 10.8 - me.driver.car_following.idm.min_gap_m + 18.4 * 18.4 / (2.0 * 1.86);
   EXPECT_LE(d.accel_mps2, -24.8 * 24.8 / (2.0 * room_m) + 1e-9);
+}
+
+TEST(Overtaking, ACarCuttingBackInWhileItsReactionLagsStillStopsBehindABrakingLeader) {
+  // rural_probe, 30 minutes, seed 1 (stop 25): a human driver that had accelerated while passing
+  // aborted and cut back in 9.5 m behind a truck at 14.0 m/s braking at 3.8 m/s^2, at 24.1 m/s. Its
+  // reaction delay still applied the acceleration of the pass; the emergency bound, judged on the
+  // closing speed alone, braked at 5.7 m/s^2 where stopping behind the braking truck takes 8.3,
+  // and they touched. Cutting back in, it brakes at once for what stopping behind it takes.
+  ScenarioConfig sc = rural();
+  Vehicle me = human_car_cutting_back_in(24.1, 1.2);
+  me.lane = 1;
+  me.lane_change.from_lane = 1;
+  me.lane_change.to_lane = 0;
+  me.lane_change.phase = LaneChangePhase::kMoving;
+  me.lane_change.phase_elapsed_s = 0.4;
+  const double truck_length_m = 16.5;
+  const double gap_m = 9.5;
+  const double leader_s = 1000.0 + 0.5 * (4.5 + truck_length_m) + gap_m;
+  LaneIndex index(1, 1);
+  add_to_index(index, Direction::kForward, 1, 0, 1, 1000.0, 24.1, 1.2, 4.5);
+  add_to_index(index, Direction::kForward, 0, 0, 2, leader_s, 14.0, -3.8, truck_length_m);
+  index.sort();
+  const Decision d = decide(me, index, DrivingEnvironment(sc));
+  const double min_gap_m = me.driver.car_following.idm.min_gap_m;
+  const double stop_behind_mps2 = 24.1 * 24.1 / (2.0 * (gap_m - min_gap_m + 14.0 * 14.0 / (2.0 * 3.8)));
+  EXPECT_LE(d.accel_mps2, -stop_behind_mps2 + 1e-9);
 }
 
 TEST(Overtaking, AnOvertakerGainsOnTheVehicleItPassesWhileStillMovingOut) {

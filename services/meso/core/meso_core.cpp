@@ -159,10 +159,12 @@ Ahead MesoCore::ahead_of(const Vehicle& v, bool own_lane_only) const {
   }
   // A vehicle of the other direction in its lane (an overtaker that has not returned yet) is taken
   // as a standing obstacle: it brakes when it could no longer stop comfortably short of it, as a
-  // driver who expects the overtaker to pull back in (micro's overtakers plan on that).
+  // driver who expects the overtaker to pull back in (micro's overtakers plan on that); not at all
+  // when it is already moving back and will be out of the lane before they meet.
   if (const Occupant* o = index_.oncoming(v.direction, v.lane, v.progress_m())) {
     const double gap = std::max(0.0, oncoming_gap(*o, v.progress_m(), v.length_m));
-    if (out.gap_m < 0.0 || gap < out.gap_m) out = {gap, 0.0, 0.0, Obstacle::kOncoming};
+    const bool in_the_way = !out_of_the_way_before_meeting(v, *o, v.lane, gap, v.speed_mps + o->speed_mps, env_);
+    if (in_the_way && (out.gap_m < 0.0 || gap < out.gap_m)) out = {gap, 0.0, 0.0, Obstacle::kOncoming};
   }
   const double to_closure = env_.ahead().distance_to_closure_m(v.direction, v.lane, v.s_m) - 0.5 * v.length_m;
   if (to_closure < env_.rules().mandatory_lookahead_m && (out.gap_m < 0.0 || to_closure < out.gap_m)) {
