@@ -141,8 +141,9 @@ double cut_in_needed_mps2(const Vehicle& v, const CarFollowingParams& cf, const 
 // at the leader's speed, and, while the leader brakes, a stop behind the point where it stops.
 // (Judged at the leader's speed alone, a car cutting back in behind one braking for a queue braked
 // at 2 m/s^2 while 3 were needed, and they touched.) Inside the standstill gap there is no floor.
-double cut_in_floor_mps2(const Vehicle& v, const CarFollowingParams& cf, const LeaderView& leader) {
-  return -std::max(cf.idm.comfort_decel_mps2, cut_in_needed_mps2(v, cf, leader));
+// `needed_mps2`: cut_in_needed_mps2.
+double cut_in_floor_mps2(const CarFollowingParams& cf, double needed_mps2) {
+  return -std::max(cf.idm.comfort_decel_mps2, needed_mps2);
 }
 
 // Moving out to pass, the overtaker is clear of the vehicle ahead in its own lane once it is in the
@@ -180,8 +181,8 @@ Longitudinal longitudinal(const Vehicle& v, const CarFollowingParams& cf, const 
     double a = hdm ? hdm_instant_accel_mps2(cf, cf.hdm, v.hdm_errors, v.speed_mps, views.data(), n)
                          : car_following_accel_mps2(cf, v.speed_mps, n > 0 ? views.data() : nullptr);
     if (n > 0 && lane == returning_to) {
-      a = std::max(a, cut_in_floor_mps2(v, cf, views[0]));
       cut_in_needed = cut_in_needed_mps2(v, cf, views[0]);
+      a = std::max(a, cut_in_floor_mps2(cf, cut_in_needed));
     }
     decided = std::min(decided, a);
     const Obstacle ob = obstacle_in(v, index, lane, env, clear_of_oncoming);

@@ -4,9 +4,11 @@ namespace entourage {
 
 void add_to_index(LaneIndex& index, Direction dir, int lane, int target_lane, VehicleId id, double progress_m,
                   double speed_mps, double accel_mps2, double length_m, int signal) {
-  const Occupant o{id, progress_m, speed_mps, accel_mps2, length_m, signal, target_lane != lane};
+  Occupant o{id, progress_m, speed_mps, accel_mps2, length_m, signal, target_lane != lane};
   index.add(dir, lane, o);
-  if (target_lane != lane) index.add(dir, target_lane, Occupant{id, progress_m, speed_mps, accel_mps2, length_m, signal});
+  if (!o.leaving) return;
+  o.leaving = false;  // the lane it moves into
+  index.add(dir, target_lane, o);
 }
 
 void add_to_index(LaneIndex& index, const ObservedVehicle& v) {
