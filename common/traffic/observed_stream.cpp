@@ -20,12 +20,7 @@ std::uint64_t observation_seed(std::uint64_t generator_seed, Direction dir) {
   return Random::derived(generator_seed, kObservationLabel + (dir == Direction::kForward ? 0 : 1)).next_u64();
 }
 
-namespace {
-
-// Cuts one snapshot (sorted by offset) into platoons, lane by lane, from the front of the stretch
-// backwards: a vehicle closer than `headway_s` behind the previous one joins its platoon. A
-// platoon cut by the stretch's ends is kept as it is (rare, and its speed is right).
-void cut_into_platoons(const std::vector<StreamVehicle>& snap, int lanes, double headway_s,
+void cut_into_platoons(const std::vector<StreamVehicle>& snap, int lanes, const PlatoonRule& rule,
                        std::vector<Platoon>* out) {
   for (int lane = 0; lane < lanes; ++lane) {
     Platoon current;
@@ -35,8 +30,9 @@ void cut_into_platoons(const std::vector<StreamVehicle>& snap, int lanes, double
       const StreamVehicle& v = *it;
       if (v.vehicle.lane != lane) continue;
       const double front = v.offset_m + 0.5 * v.vehicle.length_m;
-      const bool joins = !current.members.empty() &&
-                         previous_rear - front < headway_s * std::max(v.vehicle.speed_mps, 1.0);
+      const bool close = previous_rear - front < rule.headway_s * std::max(v.vehicle.speed_mps, 1.0);
+      const bool keeps_up = v.vehicle.speed_mps >= current.speed_mps - rule.speed_tolerance_mps;
+      const bool joins = !current.members.empty() && close && keeps_up;
       if (!joins) {
         if (!current.members.empty()) out->push_back(std::move(current));
         current = Platoon{v.vehicle.speed_mps, {}};
@@ -48,8 +44,6 @@ void cut_into_platoons(const std::vector<StreamVehicle>& snap, int lanes, double
     if (!current.members.empty()) out->push_back(std::move(current));
   }
 }
-
-}  // namespace
 
 ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, const StreamObservation& how,
                                std::uint64_t seed) {
@@ -79,31 +73,33 @@ ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, co
     std::sort(snap.begin(), snap.end(), [](const auto& a, const auto& b) { return a.offset_m < b.offset_m; });
     vehicles += snap.size();
     for (const StreamVehicle& sv : snap) note_speed_ratio(sv.vehicle);
-    cut_into_platoons(snap, lanes, how.platoon_headway_s, &platoons_);
+    cut_into_platoons(snap, lanes, {how.platoon_headway_s, how.platoon_speed_tolerance_mps}, &platoons_);
     snapshots_.push_back(std::move(snap));
   }
   for (auto& pairs : speed_ratio_by_desired_) std::sort(pairs.begin(), pairs.end());
   const double observed_length = sampled_length_m_ * static_cast<double>(snapshots_.size());
-  double carried = 0.0;  // sum over platoons of size x speed
-  for (const auto& p : platoons_) carried += static_cast<double>(p.members.size()) * p.speed_mps;
-  sample_flow_ = carried / observed_length;
-  // Vehicles and platoons alike: the stream that carries the demand has this many per metre.
-  const double scale = sample_flow_ > 0.0 ? flow_ / sample_flow_ : 1.0;
-  vehicle_density_ = static_cast<double>(vehicles) / observed_length * scale;
-  platoon_density_ = static_cast<double>(platoons_.size()) / observed_length * scale;
-  std::vector<std::pair<double, double>> by_speed;  // (speed, size)
-  by_speed.reserve(platoons_.size());
-  for (const auto& p : platoons_) by_speed.emplace_back(p.speed_mps, static_cast<double>(p.members.size()));
-  std::sort(by_speed.begin(), by_speed.end());
-  SpeedSums sum;
-  for (const auto& [speed, size] : by_speed) {
-    sum.count += 1.0;
-    sum.speed += speed;
-    sum.members += size;
-    sum.members_speed += size * speed;
-    sorted_speeds_mps_.push_back(speed);
-    running_.push_back(sum);
+  // The flow the snapshots carried, the vehicles at their own speeds, and the same counted the way
+  // the platoons enter (each member at its leader's speed). Each density is scaled so that what it
+  // carries is the demanded flow: the vehicles' (what the window's regulation aims at and the
+  // catch-up rates count) with their own speeds, the platoons' (the arrivals) with theirs.
+  double carried = 0.0;
+  for (const auto& snap : snapshots_) {
+    for (const auto& v : snap) carried += v.vehicle.speed_mps;
   }
+  double carried_by_platoons = 0.0;
+  for (const auto& p : platoons_) carried_by_platoons += static_cast<double>(p.members.size()) * p.speed_mps;
+  sample_flow_ = carried / observed_length;
+  const auto scaled = [&](double count, double carried_sum) {
+    return carried_sum > 0.0 ? count * flow_ / carried_sum : count / observed_length;
+  };
+  vehicle_density_ = scaled(static_cast<double>(vehicles), carried);
+  platoon_density_ = scaled(static_cast<double>(platoons_.size()), carried_by_platoons);
+  for (const auto& p : platoons_) platoon_speeds_.add(p.speed_mps);
+  platoon_speeds_.finish();
+  for (const auto& snap : snapshots_) {
+    for (const auto& v : snap) vehicle_speeds_.add(v.vehicle.speed_mps);
+  }
+  vehicle_speeds_.finish();
 }
 
 void ObservedStream::note_speed_ratio(const Vehicle& v) {
@@ -133,28 +129,38 @@ double ObservedStream::as_rate_per_s(double sum_over_platoons) const {
   return platoons_.empty() ? 0.0 : platoon_density_ * sum_over_platoons / static_cast<double>(platoons_.size());
 }
 
-ObservedStream::SpeedSums ObservedStream::below(double u) const {
-  const auto n = std::lower_bound(sorted_speeds_mps_.begin(), sorted_speeds_mps_.end(), u) - sorted_speeds_mps_.begin();
-  return n == 0 ? SpeedSums{} : running_[static_cast<std::size_t>(n - 1)];
+void SortedSpeeds::add(double speed_mps) { sorted_mps_.push_back(speed_mps); }
+
+void SortedSpeeds::finish() {
+  std::sort(sorted_mps_.begin(), sorted_mps_.end());
+  running_sum_mps_.clear();
+  double sum = 0.0;
+  for (double v : sorted_mps_) running_sum_mps_.push_back(sum += v);
 }
 
-double ObservedStream::sum_faster_by(double u, bool per_vehicle) const {
-  if (running_.empty()) return 0.0;
-  const SpeedSums& all = running_.back();
-  const SpeedSums slow = below(u);
-  return per_vehicle ? (all.members_speed - slow.members_speed) - u * (all.members - slow.members)
-                     : (all.speed - slow.speed) - u * (all.count - slow.count);
+SortedSpeeds::Sums SortedSpeeds::below(double u) const {
+  const auto n = std::lower_bound(sorted_mps_.begin(), sorted_mps_.end(), u) - sorted_mps_.begin();
+  return n == 0 ? Sums{} : Sums{static_cast<double>(n), running_sum_mps_[static_cast<std::size_t>(n - 1)]};
 }
 
-double ObservedStream::sum_slower_by(double u, bool per_vehicle) const {
-  const SpeedSums slow = below(u);
-  return per_vehicle ? u * slow.members - slow.members_speed : u * slow.count - slow.speed;
+SortedSpeeds::Sums SortedSpeeds::all() const {
+  return sorted_mps_.empty() ? Sums{} : Sums{static_cast<double>(sorted_mps_.size()), running_sum_mps_.back()};
 }
 
-double ObservedStream::sum_closing_with(double u, bool per_vehicle) const {
-  if (running_.empty()) return 0.0;
-  const SpeedSums& all = running_.back();
-  return per_vehicle ? all.members_speed + u * all.members : all.speed + u * all.count;
+double SortedSpeeds::sum_faster_by(double u) const {
+  const Sums total = all();
+  const Sums slow = below(u);
+  return (total.speed - slow.speed) - u * (total.count - slow.count);
+}
+
+double SortedSpeeds::sum_slower_by(double u) const {
+  const Sums slow = below(u);
+  return u * slow.count - slow.speed;
+}
+
+double SortedSpeeds::sum_closing_with(double u) const {
+  const Sums total = all();
+  return total.speed + u * total.count;
 }
 
 double ObservedStream::mean_speed_mps() const {
@@ -179,28 +185,32 @@ const Platoon& ObservedStream::draw(Random& rng, Weight w) const {
   return platoons_.back();
 }
 
+double ObservedStream::per_vehicle_rate_per_s(double sum_over_vehicles) const {
+  return vehicle_speeds_.size() == 0 ? 0.0 : vehicle_density_ * sum_over_vehicles / static_cast<double>(vehicle_speeds_.size());
+}
+
 double ObservedStream::vehicles_rear_per_s(double u) const {
-  return as_rate_per_s(sum_faster_by(u, true));
+  return per_vehicle_rate_per_s(vehicle_speeds_.sum_faster_by(u));
 }
 
 double ObservedStream::vehicles_front_per_s(double u) const {
-  return as_rate_per_s(sum_slower_by(u, true));
+  return per_vehicle_rate_per_s(vehicle_speeds_.sum_slower_by(u));
 }
 
 double ObservedStream::vehicles_oncoming_per_s(double u) const {
-  return as_rate_per_s(sum_closing_with(u, true));
+  return per_vehicle_rate_per_s(vehicle_speeds_.sum_closing_with(u));
 }
 
 double ObservedStream::rate_rear_per_s(double u) const {
-  return as_rate_per_s(sum_faster_by(u, false));
+  return as_rate_per_s(platoon_speeds_.sum_faster_by(u));
 }
 
 double ObservedStream::rate_front_per_s(double u) const {
-  return as_rate_per_s(sum_slower_by(u, false));
+  return as_rate_per_s(platoon_speeds_.sum_slower_by(u));
 }
 
 double ObservedStream::rate_oncoming_per_s(double u) const {
-  return as_rate_per_s(sum_closing_with(u, false));
+  return as_rate_per_s(platoon_speeds_.sum_closing_with(u));
 }
 
 const Platoon& ObservedStream::draw_rear(Random& rng, double u) const {

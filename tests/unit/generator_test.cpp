@@ -222,8 +222,8 @@ TEST(Generator, ArrivalsMatchTheMovingObserverRates) {
   const ObservedStream& bwd = g.stream(Direction::kBackward);
   EXPECT_TRUE(within(c.arrivals_at[0], fwd.rate_rear_per_s(u) * hours)) << c.arrivals_at[0];
   // Every vehicle of a platoon from behind enters, also one the stream's snapshot caught slower
-  // than the window (at its leader's speed); only those still queued at the end are missing.
-  EXPECT_GT(c.at_leader_speed, 0U);
+  // than the window (at its leader's speed, rare since a platoon's members keep up with it within
+  // 2 m/s); only those still queued at the end are missing.
   EXPECT_LE(c.members_at[0] - c.placed_at[0], 10U) << c.members_at[0] << " " << c.placed_at[0];
   EXPECT_TRUE(within(c.arrivals_at[1], fwd.rate_front_per_s(u) * hours)) << c.arrivals_at[1];
   EXPECT_TRUE(within(c.arrivals_at[2], bwd.rate_oncoming_per_s(u) * hours)) << c.arrivals_at[2];
