@@ -55,7 +55,7 @@ ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, co
   RoadSim sim(scenario, dir, cfg, seed);
   sampled_length_m_ = how.road_length_m - how.settled_from_m;
   double next_snapshot = how.warmup_s;
-  std::size_t vehicles = 0;
+  double carried = 0.0;  // the snapshots' flow times their length, each vehicle at its own speed
   while (snapshots_.size() < static_cast<std::size_t>(how.snapshots)) {
     sim.step();
     if (sim.time_s() + 1e-9 < next_snapshot) continue;
@@ -71,35 +71,33 @@ ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, co
       }
     }
     std::sort(snap.begin(), snap.end(), [](const auto& a, const auto& b) { return a.offset_m < b.offset_m; });
-    vehicles += snap.size();
-    for (const StreamVehicle& sv : snap) note_speed_ratio(sv.vehicle);
-    cut_into_platoons(snap, lanes, {how.platoon_headway_s, how.platoon_speed_tolerance_mps}, &platoons_);
+    for (const StreamVehicle& sv : snap) {
+      note_speed_ratio(sv.vehicle);
+      vehicle_speeds_.add(sv.vehicle.speed_mps);
+      carried += sv.vehicle.speed_mps;
+    }
+    cut_into_platoons(snap, lanes, how.platoon, &platoons_);
     snapshots_.push_back(std::move(snap));
   }
   for (auto& pairs : speed_ratio_by_desired_) std::sort(pairs.begin(), pairs.end());
   const double observed_length = sampled_length_m_ * static_cast<double>(snapshots_.size());
-  // The flow the snapshots carried, the vehicles at their own speeds, and the same counted the way
-  // the platoons enter (each member at its leader's speed). Each density is scaled so that what it
-  // carries is the demanded flow: the vehicles' (what the window's regulation aims at and the
-  // catch-up rates count) with their own speeds, the platoons' (the arrivals) with theirs.
-  double carried = 0.0;
-  for (const auto& snap : snapshots_) {
-    for (const auto& v : snap) carried += v.vehicle.speed_mps;
-  }
+  vehicle_speeds_.finish();
+  // The same flow counted the way the platoons enter (each member at its leader's speed). Each
+  // density is scaled so that what it carries is the demanded flow: the vehicles' (what the
+  // window's regulation aims at and the catch-up rates count) with their own speeds, the platoons'
+  // (the arrivals) with theirs.
   double carried_by_platoons = 0.0;
-  for (const auto& p : platoons_) carried_by_platoons += static_cast<double>(p.members.size()) * p.speed_mps;
+  for (const auto& p : platoons_) {
+    carried_by_platoons += static_cast<double>(p.members.size()) * p.speed_mps;
+    platoon_speeds_.add(p.speed_mps);
+  }
+  platoon_speeds_.finish();
   sample_flow_ = carried / observed_length;
   const auto scaled = [&](double count, double carried_sum) {
     return carried_sum > 0.0 ? count * flow_ / carried_sum : count / observed_length;
   };
-  vehicle_density_ = scaled(static_cast<double>(vehicles), carried);
+  vehicle_density_ = scaled(static_cast<double>(vehicle_speeds_.size()), carried);
   platoon_density_ = scaled(static_cast<double>(platoons_.size()), carried_by_platoons);
-  for (const auto& p : platoons_) platoon_speeds_.add(p.speed_mps);
-  platoon_speeds_.finish();
-  for (const auto& snap : snapshots_) {
-    for (const auto& v : snap) vehicle_speeds_.add(v.vehicle.speed_mps);
-  }
-  vehicle_speeds_.finish();
 }
 
 void ObservedStream::note_speed_ratio(const Vehicle& v) {
@@ -143,6 +141,8 @@ SortedSpeeds::Sums SortedSpeeds::below(double u) const {
   return n == 0 ? Sums{} : Sums{static_cast<double>(n), running_sum_mps_[static_cast<std::size_t>(n - 1)]};
 }
 
+double SortedSpeeds::sum_mps() const { return all().speed; }
+
 SortedSpeeds::Sums SortedSpeeds::all() const {
   return sorted_mps_.empty() ? Sums{} : Sums{static_cast<double>(sorted_mps_.size()), running_sum_mps_.back()};
 }
@@ -164,13 +164,8 @@ double SortedSpeeds::sum_closing_with(double u) const {
 }
 
 double ObservedStream::mean_speed_mps() const {
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (const auto& snap : snapshots_) {
-    for (const auto& v : snap) sum += v.vehicle.speed_mps;
-    n += snap.size();
-  }
-  return n == 0 ? 0.0 : sum / static_cast<double>(n);
+  const auto n = static_cast<double>(vehicle_speeds_.size());
+  return n == 0.0 ? 0.0 : vehicle_speeds_.sum_mps() / n;
 }
 
 template <typename Weight>
@@ -186,7 +181,8 @@ const Platoon& ObservedStream::draw(Random& rng, Weight w) const {
 }
 
 double ObservedStream::per_vehicle_rate_per_s(double sum_over_vehicles) const {
-  return vehicle_speeds_.size() == 0 ? 0.0 : vehicle_density_ * sum_over_vehicles / static_cast<double>(vehicle_speeds_.size());
+  const auto n = static_cast<double>(vehicle_speeds_.size());
+  return n == 0.0 ? 0.0 : vehicle_density_ * sum_over_vehicles / n;
 }
 
 double ObservedStream::vehicles_rear_per_s(double u) const {

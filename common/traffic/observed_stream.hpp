@@ -6,7 +6,7 @@
 // leader. The generator fills the window with a stretch of such a snapshot and feeds its edges
 // with such platoons, so that both the speeds and the structure of the stream are right.
 //
-// A platoon is a leader and the vehicles following it in its lane closer than `platoon_headway_s`.
+// A platoon is a leader and the vehicles following it in its lane that keep up with it (PlatoonRule).
 // The moving-observer relations (../shared/notes/traffic-theory.md) hold for platoons as for
 // vehicles: with platoon density k_p and the space-mean distribution f_p of platoon speeds (the
 // snapshots are space samples), a window moving at u is entered from behind at k_p E[(v - u)+],
@@ -14,9 +14,10 @@
 // that weight. The platoon density is scaled so that the platoons carry exactly the demanded flow
 // (sum of size x speed over the sampled length = q): the sample gives the stream's structure, the
 // demand its flow. The vehicle density is scaled alike, so that the vehicles at their own speeds
-// carry it (the generator's regulation aims at it, and a fill takes the stretch closest to it): a sample of 20 snapshots carries a flow some percent off
-// the demand (3-13 % below it on the rural road, within 2 % on the freeway), and a target from the
-// unscaled density disagreed with the arrivals by as much.
+// carry it (the generator's regulation aims at it, and a fill takes the stretch closest to it): a
+// sample of 20 snapshots carries a flow some percent off the demand (3-13 % below it on the rural
+// road, within 2 % on the freeway), and a target from the unscaled density disagreed with the
+// arrivals by as much.
 
 #include <cstddef>
 #include <cstdint>
@@ -28,33 +29,6 @@
 #include "traffic/vehicle.hpp"
 
 namespace entourage {
-
-// Snapshots of 10 km of settled road every 120 s. A vehicle takes 350-450 s to cross those 10 km,
-// so consecutive snapshots share most of their vehicles: the 20 are some five independent samples,
-// and what they carry is off the demand by several percent (on the rural road 3-13 % below it; one
-// snapshot's flow moves between 300 and 550 veh/h at a demand of 450). The densities are scaled to
-// the demand (below); more or sparser snapshots would cost startup time in proportion.
-struct StreamObservation {
-  double road_length_m = 12000.0;
-  double settled_from_m = 2000.0;  // the stream is sampled beyond this distance from the source
-  double warmup_s = 450.0;         // before the first snapshot: the stream reaches the road's end
-  double snapshot_every_s = 120.0;
-  int snapshots = 20;
-  double platoon_headway_s = 3.0;
-  double platoon_speed_tolerance_mps = 2.0;  // PlatoonRule::speed_tolerance_mps
-};
-
-// A vehicle of a snapshot or of a platoon: the position along its direction of travel from the
-// stretch's rear end (snapshots), or the distance behind its platoon's leader (platoons).
-struct StreamVehicle {
-  double offset_m = 0.0;
-  Vehicle vehicle;  // lane, speed, type, size and driver; id and position are set on entry
-};
-
-struct Platoon {
-  double speed_mps = 0.0;             // the leader's
-  std::vector<StreamVehicle> members;  // leader first (offset 0), then backwards
-};
 
 // Which vehicles of a snapshot drive in one platoon. A vehicle joins the platoon ahead of it in its
 // lane when it is closer than `headway_s` behind that platoon's last vehicle and not slower than
@@ -68,6 +42,32 @@ struct Platoon {
 struct PlatoonRule {
   double headway_s = 3.0;
   double speed_tolerance_mps = 2.0;
+};
+
+// Snapshots of 10 km of settled road every 120 s. A vehicle takes 350-450 s to cross those 10 km,
+// so consecutive snapshots share most of their vehicles: the 20 are some five independent samples,
+// and what they carry is off the demand by several percent (on the rural road 3-13 % below it; one
+// snapshot's flow moves between 300 and 550 veh/h at a demand of 450). The densities are scaled to
+// the demand (below); more or sparser snapshots would cost startup time in proportion.
+struct StreamObservation {
+  double road_length_m = 12000.0;
+  double settled_from_m = 2000.0;  // the stream is sampled beyond this distance from the source
+  double warmup_s = 450.0;         // before the first snapshot: the stream reaches the road's end
+  double snapshot_every_s = 120.0;
+  int snapshots = 20;
+  PlatoonRule platoon;
+};
+
+// A vehicle of a snapshot or of a platoon: the position along its direction of travel from the
+// stretch's rear end (snapshots), or the distance behind its platoon's leader (platoons).
+struct StreamVehicle {
+  double offset_m = 0.0;
+  Vehicle vehicle;  // lane, speed, type, size and driver; id and position are set on entry
+};
+
+struct Platoon {
+  double speed_mps = 0.0;             // the leader's
+  std::vector<StreamVehicle> members;  // leader first (offset 0), then backwards
 };
 
 // Cuts one snapshot (sorted by offset) into platoons, lane by lane, from the front of the stretch
@@ -91,6 +91,7 @@ class SortedSpeeds {
   void add(double speed_mps);
   void finish();  // sorts; call after the last add
   std::size_t size() const { return sorted_mps_.size(); }
+  double sum_mps() const;                   // of all the speeds
   double sum_faster_by(double u) const;     // sum of max(0, v - u)
   double sum_slower_by(double u) const;     // sum of max(0, u - v)
   double sum_closing_with(double u) const;  // sum of v + u

@@ -58,7 +58,7 @@ TEST(ObservedStream, AFollowerClosingInOnItsLeaderDrivesInItsPlatoon) {
 
 TEST(ObservedStream, EveryPlatoonMemberKeepsUpWithItsLeader) {
   const ObservedStream s(freeway_scenario(), Direction::kForward, StreamObservation{}, 3);
-  const double tolerance = StreamObservation{}.platoon_speed_tolerance_mps;
+  const double tolerance = StreamObservation{}.platoon.speed_tolerance_mps;
   std::size_t followers = 0;
   for (const Platoon& p : s.platoons()) {
     for (std::size_t i = 1; i < p.members.size(); ++i, ++followers) {
