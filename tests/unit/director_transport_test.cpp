@@ -259,19 +259,38 @@ TEST_F(CutterOnItsWay, AVehicleHoldingAnActorUpOnItsWayMakesWayToALaneClearOfThe
   const std::vector<int> role_lanes{1};
   const ObservedVehicle slow = vehicle(2, 1950.0, 24.0, 1);  // ends 1910 + 1000 = 2910: behind the zone
   const ClearingSituation at{zones, 40.0, ego, 3000.0, role_lanes, lanes, cfg};
-  const auto way = make_way(slow, slot, actor, 27.0, at);
+  const auto way = make_way(slow, slot, actor, 27.0, -1, at);
   ASSERT_TRUE(way.has_value());
   EXPECT_EQ(way->lane, 0);
   EXPECT_EQ(way->speed_mps, kOwnDesiredSpeed_mps);
   // Not a vehicle it would move into a zone (it would end 40 m ahead of the ego in its lane) ...
   const ObservedVehicle into_zone = vehicle(3, 2020.0, 25.5, 1);
-  EXPECT_FALSE(make_way(into_zone, slot, actor, 28.0, at).has_value());
+  EXPECT_FALSE(make_way(into_zone, slot, actor, 28.0, -1, at).has_value());
   // ... nor one as fast as the actor's command, one behind the actor, one beyond its horizon, or
   // one in another lane.
-  EXPECT_FALSE(make_way(vehicle(4, 1950.0, 26.5, 1), slot, actor, 27.0, at).has_value());
-  EXPECT_FALSE(make_way(vehicle(5, 1880.0, 20.0, 1), slot, actor, 27.0, at).has_value());
-  EXPECT_FALSE(make_way(vehicle(6, 2200.0, 20.0, 1), slot, actor, 27.0, at).has_value());
-  EXPECT_FALSE(make_way(vehicle(7, 1950.0, 20.0, 0), slot, actor, 27.0, at).has_value());
+  EXPECT_FALSE(make_way(vehicle(4, 1950.0, 26.5, 1), slot, actor, 27.0, -1, at).has_value());
+  EXPECT_FALSE(make_way(vehicle(5, 1880.0, 20.0, 1), slot, actor, 27.0, -1, at).has_value());
+  EXPECT_FALSE(make_way(vehicle(6, 2200.0, 20.0, 1), slot, actor, 27.0, -1, at).has_value());
+  EXPECT_FALSE(make_way(vehicle(7, 1950.0, 20.0, 0), slot, actor, 27.0, -1, at).has_value());
+}
+
+TEST_F(CutterOnItsWay, AVehicleNeverMakesWayIntoTheLaneTheActorPassesIn) {
+  // The same slow vehicle ahead of the actor, the right lane clear of the zone where it will be.
+  // An actor told to pass in the right lane, moving there, or in it already: the slow one keeps
+  // its lane, or it would stand in front of the actor in the lane the actor passes in.
+  const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 3003.0, 3060.0}};
+  const std::vector<int> role_lanes{1};
+  const ObservedVehicle slow = vehicle(2, 1950.0, 24.0, 1);
+  const ClearingSituation at{zones, 40.0, ego, 3000.0, role_lanes, lanes, cfg};
+  ASSERT_TRUE(make_way(slow, slot, actor, 27.0, 1, at).has_value());  // told to keep its lane
+  EXPECT_FALSE(make_way(slow, slot, actor, 27.0, 0, at).has_value());  // told to pass on the right
+  ObservedVehicle moving = actor;
+  moving.target_lane = 0;
+  EXPECT_FALSE(make_way(slow, slot, moving, 27.0, 1, at).has_value());
+  ObservedVehicle beside = actor;
+  beside.lane = 0;
+  beside.target_lane = 0;
+  EXPECT_FALSE(make_way(vehicle(3, 1950.0, 24.0, 1), slot, beside, 27.0, 0, at).has_value());
 }
 
 }  // namespace

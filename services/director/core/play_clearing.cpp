@@ -70,7 +70,11 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
     if (actor == nullptr) continue;
     for (std::size_t i = 0; i < in.world.size(); ++i) {
       if (!ours_or_free(i)) continue;
-      if (const auto c = make_way(in.world[i], slots[r], *actor, roles_[r].command_mps, situation)) clear(i, *c, false);
+      const auto sent = sent_.find(actor->id);
+      const int actor_cmd_lane = sent != sent_.end() ? sent->second.lane : -1;
+      if (const auto c = make_way(in.world[i], slots[r], *actor, roles_[r].command_mps, actor_cmd_lane, situation)) {
+        clear(i, *c, false);
+      }
     }
   }
   let_in(in, out);

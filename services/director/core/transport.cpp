@@ -290,13 +290,14 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
 }
 
 std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, const ObservedVehicle& actor,
-                                  double actor_cmd_mps, const ClearingSituation& at) {
+                                  double actor_cmd_mps, int actor_cmd_lane, const ClearingSituation& at) {
   if (v.lane != v.target_lane) return std::nullopt;  // already changing lanes
   if (!holds_up(v, slot.direction, slot.lane, sign(slot.direction) * slot.s_m, actor, actor_cmd_mps)) return std::nullopt;
   const double s_then = s_after_m(v, std::max(at.time_left_s, 0.0));
   auto clear_lane = [&](int lane) {
     if (lane < 0 || lane >= at.lanes.of(v.direction)) return false;
     if (std::find(at.role_lanes.begin(), at.role_lanes.end(), lane) != at.role_lanes.end()) return false;
+    if (lane == actor.lane || lane == actor.target_lane || lane == actor_cmd_lane) return false;
     return std::none_of(at.zones.begin(), at.zones.end(), [&](const ZoneAtStart& z) {
       return z.direction == v.direction && in_zone(z, lane, s_then, v.length_m + 2.0 * kZoneMargin_m);
     });
