@@ -68,10 +68,10 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   for (std::size_t r = 0; r < roles_.size(); ++r) {
     const ObservedVehicle* actor = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
     if (actor == nullptr) continue;
+    const auto sent = sent_.find(actor->id);
+    const int actor_cmd_lane = sent != sent_.end() ? sent->second.lane : -1;
     for (std::size_t i = 0; i < in.world.size(); ++i) {
       if (!ours_or_free(i)) continue;
-      const auto sent = sent_.find(actor->id);
-      const int actor_cmd_lane = sent != sent_.end() ? sent->second.lane : -1;
       if (const auto c = make_way(in.world[i], slots[r], *actor, roles_[r].command_mps, actor_cmd_lane, situation)) {
         clear(i, *c, false);
       }

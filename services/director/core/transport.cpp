@@ -297,7 +297,7 @@ std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, co
   auto clear_lane = [&](int lane) {
     if (lane < 0 || lane >= at.lanes.of(v.direction)) return false;
     if (std::find(at.role_lanes.begin(), at.role_lanes.end(), lane) != at.role_lanes.end()) return false;
-    if (lane == actor.lane || lane == actor.target_lane || lane == actor_cmd_lane) return false;
+    if (occupies(actor, v.direction, lane) || lane == actor_cmd_lane) return false;
     return std::none_of(at.zones.begin(), at.zones.end(), [&](const ZoneAtStart& z) {
       return z.direction == v.direction && in_zone(z, lane, s_then, v.length_m + 2.0 * kZoneMargin_m);
     });
