@@ -1,5 +1,6 @@
 #include "traffic/lane_changes.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include "traffic/actor_driving.hpp"
@@ -12,6 +13,9 @@ namespace {
 // A vehicle seeking a gap drops back from the vehicle it lets by to this much below that one's
 // speed and holds it (slower only holds its own lane up; back at full speed it never falls behind).
 constexpr double kLetBySpeed_mps = 5.0;
+// A follower in the target lane that brakes is judged by its speed this far ahead: one braking to
+// below the seeker's speed is holding back to let it in.
+constexpr double kHoldingBackLookahead_s = 2.0;
 
 // Acceleration another driver (speed `speed_mps`, progress `progress_m`, length `length_m`) would
 // have behind `leader`, estimated with the deciding driver's own parameters (a driver judges
@@ -121,8 +125,13 @@ double gap_seeking_cap_mps2(const Vehicle& v, const CarFollowingParams& cf, cons
     matched.speed_mps = std::max(self.speed_mps, f.speed_mps);
     const bool unsafe = overlaps || estimated_accel(cf, f.progress_m, f.speed_mps, f.length_m, &matched) <
                                         -v.driver.mobil.safe_decel_mps2;
-    // A slower one is holding back to let it in (or will be passed): not let by.
-    const bool slower = f.speed_mps < self.speed_mps;
+    // A slower one is holding back to let it in (or will be passed): not let by; nor one that
+    // brakes to below its speed within kHoldingBackLookahead_s. Judged by its present speed alone,
+    // a follower told to hold back below this vehicle's speed was still the faster one while it
+    // braked: this one dropped back from it, that one's target fell with it, and the two braked
+    // each other from 24 to 1 m/s, both lanes and the ego behind them (lead vehicle, seed 18).
+    const double f_soon_mps = f.speed_mps + std::min(f.accel_mps2, 0.0) * kHoldingBackLookahead_s;
+    const bool slower = std::min(f.speed_mps, f_soon_mps) < self.speed_mps;
     if (!towards_us && !slower && unsafe) return drop_back_from(f);
   }
   // Else it eases in behind the one ahead there.

@@ -39,7 +39,8 @@ LaneChangePlan plan_lane_change(const Vehicle& v, const CarFollowingParams& cf, 
 // was asked for finds its gap by speed, as drivers do: it lets by the vehicle beside or just
 // behind it in that lane that would leave it no safe gap in front even at that one's speed
 // (dropping back to a little below that one's speed), unless that one signals towards its lane
-// too or is slower than it (holding back to let it in: the director's let-in); otherwise it eases
+// too or is slower than it, or brakes to below its speed within 2 s (holding back to let it in:
+// the director's let-in); otherwise it eases
 // in behind the vehicle ahead there (car following as if already in the lane). Never harder than
 // its comfortable deceleration. Returns the cap on its acceleration (infinite when it is not
 // seeking a gap).

@@ -198,6 +198,24 @@ TEST_F(GapSeeking, ASlowerCarBesideItIsNotLetByItMayBeHoldingBackToLetItIn) {
   EXPECT_EQ(cap(me), std::numeric_limits<double>::infinity());
 }
 
+// One still faster but braking to below its speed within 2 s is holding back too: judged by its
+// speed alone, the two braked each other down (lead vehicle, seed 18: from 24 to 1 m/s).
+TEST_F(GapSeeking, ACarBesideItBrakingToBelowItsSpeedIsNotLetBy) {
+  const Vehicle me = seeker(1000.0, 24.0);
+  add(me);
+  index.add(Direction::kForward, 1, {2, 999.0, 25.0, -1.0, 4.5, 0});  // 1 m/s faster, braking at 1 m/s2
+  index.sort();
+  EXPECT_EQ(cap(me), std::numeric_limits<double>::infinity());
+}
+
+TEST_F(GapSeeking, ACarBesideItBrakingOnlyALittleIsStillLetBy) {
+  const Vehicle me = seeker(1000.0, 24.0);
+  add(me);
+  index.add(Direction::kForward, 1, {2, 999.0, 25.0, -0.2, 4.5, 0});  // still faster in 2 s
+  index.sort();
+  EXPECT_LT(cap(me), 0.0);
+}
+
 TEST_F(GapSeeking, OfTwoThatWantEachOthersLaneTheOneBehindGivesWay) {
   // Car 2 beside and a little behind wants the right lane (indicator right): car 1 does not let it
   // by (each letting the other by braked both to a standstill), car 2 drops back behind car 1.
