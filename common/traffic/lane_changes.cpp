@@ -204,6 +204,14 @@ LaneChangePlan plan_lane_change(const Vehicle& v, const CarFollowingParams& cf, 
       break;
     }
     case LaneChangePhase::kSignalling: {
+      // A vehicle the director moves calls off a change it is no longer asked for: cast as an
+      // actor in the lane it was signalling to leave, a car changed out and back, and was 8 s
+      // and 20 m late at its start (cut-in, seed 1).
+      if (director_lane(v) >= 0 && mandatory != lc.to_lane) {
+        lc.phase = LaneChangePhase::kNone;
+        lc.to_lane = lc.from_lane;
+        break;
+      }
       lc.phase_elapsed_s += dt_s;
       if (lc.phase_elapsed_s < rules.signal_s) break;
       const bool must = mandatory == lc.to_lane;

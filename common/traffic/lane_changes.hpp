@@ -32,6 +32,7 @@ struct LaneChangePlan {
 };
 
 // The next state of v's lane change (MOBIL or mandatory; none for drivers without lane changes).
+// A vehicle the director moves calls off a signalled change it is no longer asked for.
 LaneChangePlan plan_lane_change(const Vehicle& v, const CarFollowingParams& cf, const LaneIndex& index,
                                 const DrivingEnvironment& env);
 

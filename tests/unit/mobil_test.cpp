@@ -130,6 +130,27 @@ TEST_F(LaneChangeSituation, DecisionSignalsFirstThenMovesWhenSafe) {
   EXPECT_EQ(d.lane_change.phase, LaneChangePhase::kMoving);
 }
 
+// Cast as an actor for the lane it was signalling to leave, a car changed out and back (cut-in,
+// seed 1): a vehicle the director moves calls off a change it is no longer asked for.
+TEST_F(LaneChangeSituation, AVehicleTheDirectorNoLongerAsksToChangeLanesCallsOffItsSignal) {
+  Vehicle me = car(1, 0, 1000.0, 28.0, 33.0);
+  me.control.mode = ControlMode::kTransported;
+  me.control.speed_mps = kOwnDesiredSpeed_mps;
+  me.control.lane = 1;
+  add(me);
+  index.sort();
+  Decision d = decide(me, index, env);
+  ASSERT_EQ(d.lane_change.phase, LaneChangePhase::kSignalling);
+  EXPECT_EQ(d.lane_change.to_lane, 1);
+  me.lane_change = d.lane_change;
+  Vehicle asked_again = me;  // still asked for lane 1: it goes on signalling
+  EXPECT_EQ(decide(asked_again, index, env).lane_change.phase, LaneChangePhase::kSignalling);
+  me.control.lane = 0;  // now asked to keep its lane
+  d = decide(me, index, env);
+  EXPECT_EQ(d.lane_change.phase, LaneChangePhase::kNone);
+  EXPECT_EQ(d.lane_change.to_lane, 0);
+}
+
 TEST_F(LaneChangeSituation, KeepRightVehiclesNeverMoveLeft) {
   Vehicle truck = car(1, 0, 1000.0, 22.0, 25.0);
   truck.driver.keep_right = true;
