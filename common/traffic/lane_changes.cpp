@@ -131,7 +131,7 @@ double gap_seeking_cap_mps2(const Vehicle& v, const CarFollowingParams& cf, cons
     // braked: this one dropped back from it, that one's target fell with it, and the two braked
     // each other from 24 to 1 m/s, both lanes and the ego behind them (lead vehicle, seed 18).
     const double f_soon_mps = f.speed_mps + std::min(f.accel_mps2, 0.0) * kHoldingBackLookahead_s;
-    const bool slower = std::min(f.speed_mps, f_soon_mps) < self.speed_mps;
+    const bool slower = f_soon_mps < self.speed_mps;
     if (!towards_us && !slower && unsafe) return drop_back_from(f);
   }
   // Else it eases in behind the one ahead there.
@@ -186,6 +186,10 @@ LaneChangePlan plan_lane_change(const Vehicle& v, const CarFollowingParams& cf, 
   LaneChangePlan plan{v.lane_change, false};
   LaneChangeState& lc = plan.state;
   const int mandatory = uses_lane_changes(v) ? mandatory_target_lane(v, env) : -1;
+  auto call_off = [&lc] {
+    lc.phase = LaneChangePhase::kNone;
+    lc.to_lane = lc.from_lane;
+  };
   switch (lc.phase) {
     case LaneChangePhase::kNone: {
       lc.since_last_change_s += dt_s;
@@ -208,8 +212,7 @@ LaneChangePlan plan_lane_change(const Vehicle& v, const CarFollowingParams& cf, 
       // actor in the lane it was signalling to leave, a car changed out and back, and was 8 s
       // and 20 m late at its start (cut-in, seed 1).
       if (director_lane(v) >= 0 && mandatory != lc.to_lane) {
-        lc.phase = LaneChangePhase::kNone;
-        lc.to_lane = lc.from_lane;
+        call_off();
         break;
       }
       lc.phase_elapsed_s += dt_s;
@@ -222,8 +225,7 @@ LaneChangePlan plan_lane_change(const Vehicle& v, const CarFollowingParams& cf, 
         lc.phase_elapsed_s = 0.0;
         plan.mandatory = must;
       } else if (!must && lc.phase_elapsed_s >= rules.max_signal_wait_s) {
-        lc.phase = LaneChangePhase::kNone;  // give up; the interval restarts
-        lc.to_lane = lc.from_lane;
+        call_off();  // give up; the interval restarts
         lc.since_last_change_s = 0.0;
       }
       break;

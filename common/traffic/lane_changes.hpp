@@ -41,10 +41,9 @@ LaneChangePlan plan_lane_change(const Vehicle& v, const CarFollowingParams& cf, 
 // behind it in that lane that would leave it no safe gap in front even at that one's speed
 // (dropping back to a little below that one's speed), unless that one signals towards its lane
 // too or is slower than it, or brakes to below its speed within 2 s (holding back to let it in:
-// the director's let-in); otherwise it eases
-// in behind the vehicle ahead there (car following as if already in the lane). Never harder than
-// its comfortable deceleration. Returns the cap on its acceleration (infinite when it is not
-// seeking a gap).
+// the director's let-in); otherwise it eases in behind the vehicle ahead there (car following as
+// if already in the lane). Never harder than its comfortable deceleration. Returns the cap on its
+// acceleration (infinite when it is not seeking a gap).
 // Without it a cleared vehicle drove beside a lane without gaps at the same speed until the play
 // failed on it.
 double gap_seeking_cap_mps2(const Vehicle& v, const CarFollowingParams& cf, const LaneIndex& index,

@@ -143,8 +143,8 @@ TEST_F(LaneChangeSituation, AVehicleTheDirectorNoLongerAsksToChangeLanesCallsOff
   ASSERT_EQ(d.lane_change.phase, LaneChangePhase::kSignalling);
   EXPECT_EQ(d.lane_change.to_lane, 1);
   me.lane_change = d.lane_change;
-  Vehicle asked_again = me;  // still asked for lane 1: it goes on signalling
-  EXPECT_EQ(decide(asked_again, index, env).lane_change.phase, LaneChangePhase::kSignalling);
+  // Still asked for lane 1: it goes on signalling.
+  EXPECT_EQ(decide(me, index, env).lane_change.phase, LaneChangePhase::kSignalling);
   me.control.lane = 0;  // now asked to keep its lane
   d = decide(me, index, env);
   EXPECT_EQ(d.lane_change.phase, LaneChangePhase::kNone);
