@@ -3,7 +3,8 @@
 // The vehicle stays with its owner (micro or meso) and keeps its own driver model; the control
 // only changes what that driver aims for:
 //   autonomous   everyday driving, nothing changed
-//   transported  on its way to its start position: the desired speed is the director's, the only
+//   transported  on its way to its start position: the desired speed is the director's (eased
+//                down to at no more than the driver's comfortable deceleration), the only
 //                lane change it makes is towards the director's lane (with the model's safety
 //                test), and its acceleration rises no faster than max_jerk_mps3
 //   controlled   the play runs: the speed goes to speed_mps at accel_mps2 (up) / decel_mps2

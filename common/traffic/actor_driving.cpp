@@ -19,6 +19,14 @@ double actor_desired_speed_mps(const Vehicle& v, double own_mps) {
   return m == ControlMode::kTransported || m == ControlMode::kControlled ? v.control.speed_mps : own_mps;
 }
 
+bool eases_down(const Vehicle& v, double director_mps) {
+  return v.control.mode == ControlMode::kTransported && director_mps < v.speed_mps;
+}
+
+double easing_accel_mps2(const CarFollowingParams& cf, double speed_mps) {
+  return std::max(car_following_accel_mps2(cf, speed_mps, nullptr), -cf.idm.comfort_decel_mps2);
+}
+
 bool chooses_lanes_freely(const Vehicle& v) {
   const ControlMode m = v.control.mode;
   return m == ControlMode::kAutonomous || m == ControlMode::kReleasing;

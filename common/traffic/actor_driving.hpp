@@ -22,6 +22,19 @@ bool chooses_lanes_freely(const Vehicle& v);
 // change, with the model's safety test), -1: none.
 int director_lane(const Vehicle& v);
 
+// A transported vehicle faster than the director's speed (`director_mps`, its desired speed now)
+// eases down to it as drivers do to a lower speed of their own choosing: at its model's free-road
+// acceleration there, but no harder than its comfortable deceleration b; its leaders still brake it
+// as hard as they need. Left to the model, the free-road term above the desired speed grows with
+// (v/v0)^delta: vehicles the director slowed braked at up to 6 m/s^2 on a free road 57 m behind
+// their leader (stopped vehicle, stop 30; the median of the cleared vehicles' hardest braking per
+// run fell from 5.9 to 5.2 m/s^2 with the easing, the rest is car following behind vehicles that
+// change in ahead). Cf. the improved IDM's free-road deceleration above v0, bounded by b (Treiber
+// & Kesting, Traffic Flow Dynamics, 2013, ch. 11.3.6).
+bool eases_down(const Vehicle& v, double director_mps);
+// The easing acceleration: `cf` with the director's speed as its desired speed.
+double easing_accel_mps2(const CarFollowingParams& cf, double speed_mps);
+
 // A controlled actor's acceleration: towards its target speed at the script's rates (reaching it
 // without overshoot), on a free road exactly that; with a leader no more than car following at
 // an unbounded desired speed allows there (`car_following_mps2`, with the driver's own a as its

@@ -53,6 +53,41 @@ TEST(ActorDriving, ATransportedVehicleDrivesAtTheDirectorsSpeedWithBoundedJerk) 
   EXPECT_EQ(w.get(1).lane, 0);  // no lane change of its own
 }
 
+TEST(ActorDriving, ATransportedVehicleFarAboveTheDirectorsSpeedEasesDownAtItsComfortableDeceleration) {
+  // Told to drive 10 m/s below its speed (a follower asked to let a car in): the model's free-road
+  // term alone would brake at a [1 - (30/20)^4] = -6 m/s^2 and more; a driver eases down at b.
+  MiniWorld w(testing::road_scenario(2, 0));
+  Vehicle v = car(1, Direction::kForward, 0, 1000.0, 30.0, 33.0);
+  v.control = transported(20.0);
+  w.vehicles.push_back(v);
+  const double b = v.driver.car_following.idm.comfort_decel_mps2;
+  double hardest = 0.0;
+  for (int i = 0; i < 300; ++i) {
+    w.step();
+    hardest = std::min(hardest, w.get(1).accel_mps2);
+  }
+  EXPECT_GE(hardest, -b - 1e-9);
+  EXPECT_LT(hardest, -0.5 * b);               // it does slow down, not merely coast
+  EXPECT_NEAR(w.get(1).speed_mps, 20.0, 0.3);  // and arrives at the director's speed
+}
+
+TEST(ActorDriving, AVehicleEasingDownStillBrakesAsHardAsItsLeaderNeeds) {
+  // Easing down towards the director's speed, a crawling truck 50 m ahead (closing at 20 m/s needs
+  // some 4 m/s^2): car following, not the easing, sets the braking, and it stays behind the truck.
+  MiniWorld w(testing::road_scenario(1, 0));
+  Vehicle v = car(1, Direction::kForward, 0, 1000.0, 25.0, 33.0);
+  v.control = transported(20.0);
+  w.vehicles = {v, truck(2, Direction::kForward, 1060.0, 5.0)};
+  double hardest = 0.0;
+  for (int i = 0; i < 300; ++i) {
+    w.step();
+    hardest = std::min(hardest, w.get(1).accel_mps2);
+  }
+  EXPECT_LT(hardest, -v.driver.car_following.idm.comfort_decel_mps2);
+  EXPECT_GT(w.min_clearance_m, 1.0);
+  EXPECT_NEAR(w.get(1).speed_mps, 5.0, 0.5);
+}
+
 TEST(ActorDriving, ATransportedVehicleGoesToTheDirectorsLaneAndStaysThere) {
   MiniWorld w(testing::road_scenario(3, 0));
   Vehicle v = car(1, Direction::kForward, 0, 1000.0, 25.0, 25.0);

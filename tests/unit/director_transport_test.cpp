@@ -61,6 +61,21 @@ TEST(Transport, AnActorToSpeedUpIsGivenTheDesiredSpeedAtWhichItsFreeRoadAccelera
   EXPECT_DOUBLE_EQ(drive_speed_mps(40.0, v, rate, a), 40.0);
 }
 
+TEST(Transport, AnActorNearerAheadOfTheEgoThanItsStartNeverDrivesSlowerThanItsStartSpeedRelativeToTheEgo) {
+  // The lead, to start 40 m ahead at the ego's speed, is 20 m ahead of an ego at 20 m/s: it keeps
+  // at least the ego's speed and opens the gap (20 m over 10 s: 2 m/s faster).
+  EXPECT_DOUBLE_EQ(ego_pace_floor_mps(20.0, 40.0, 20.0, 0.0), 22.0);
+  // Nearly there, it opens the last metres slowly; the gap is never closed by the floor.
+  EXPECT_NEAR(ego_pace_floor_mps(39.0, 40.0, 20.0, 0.0), 20.1, 1e-12);
+  // Far nearer than its start: at most kOpenToStartMax_mps faster than its start speed.
+  EXPECT_DOUBLE_EQ(ego_pace_floor_mps(5.0, 60.0, 20.0, -2.0), 18.0 + kOpenToStartMax_mps);
+  // Beyond its start (the plan brings it back) or not ahead of the ego: no floor.
+  EXPECT_LT(ego_pace_floor_mps(45.0, 40.0, 20.0, 0.0), 0.0);
+  EXPECT_LT(ego_pace_floor_mps(-10.0, 40.0, 20.0, 0.0), 0.0);
+  // A start slower than a standing ego: no negative speed.
+  EXPECT_NEAR(ego_pace_floor_mps(39.0, 40.0, 0.0, -5.0), 0.1, 1e-12);
+}
+
 TEST(Transport, AVehicleThatWouldStandInAClearZoneIsSentToTheNextLaneOrOutOfTheZone) {
   PlayConfig play = lead_play();
   play.clear = {{0, 5.0, 40.0}};

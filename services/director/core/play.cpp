@@ -321,8 +321,19 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
     const double rate = transport_rate_mps2(setting_.director, type_accel);
     const Waypoint way = way_to(slots[r], aim_time_s, staged_.roles[r], in.ego.direction, staged_lane(in),
                                 time_to_start_s, setting_.director);
-    const TransportCommand t = transport(way.slot, *v, way.time_s, role.command_mps, in.dt_s, in.world, in.ego,
-                                         setting_.lanes, setting_.director, rate, type_accel);
+    TransportCommand t = transport(way.slot, *v, way.time_s, role.command_mps, in.dt_s, in.world, in.ego,
+                                   setting_.lanes, setting_.director, rate, type_accel);
+    const PlayRoleConfig& rc = staged_.roles[r];
+    const bool in_ego_lane = rc.direction == in.ego.direction && !rc.absolute_speed &&
+                             slots[r].lane == staged_lane(in) && v->lane == slots[r].lane && v->target_lane == v->lane;
+    if (in_ego_lane) {
+      const double floor = ego_pace_floor_mps(sign(in.ego.direction) * (v->s_m - in.ego.s_m), rc.ahead_m,
+                                              in.ego.speed_mps, rc.speed_mps);
+      if (floor > t.speed_mps) {
+        t.speed_mps = floor;
+        t.drive_mps = drive_speed_mps(floor, v->speed_mps, rate, type_accel);
+      }
+    }
     role.command_mps = t.speed_mps;
     role.position_error_m = t.position_error_m;
     role.speed_error_mps = t.speed_error_mps;

@@ -84,6 +84,12 @@ double drive_speed_mps(double speed_mps, double actor_speed_mps, double rate_mps
   return std::max(speed_mps, actor_speed_mps / std::pow(1.0 - share, 0.25));
 }
 
+double ego_pace_floor_mps(double ahead_of_ego_m, double start_ahead_m, double ego_speed_mps, double start_offset_mps) {
+  if (ahead_of_ego_m <= 0.0 || ahead_of_ego_m >= start_ahead_m) return -1.0;
+  const double open_mps = std::min((start_ahead_m - ahead_of_ego_m) / kOpenToStart_s, kOpenToStartMax_mps);
+  return std::max(0.0, ego_speed_mps + start_offset_mps) + open_mps;
+}
+
 TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, double time_left_s, double previous_cmd_mps,
                            double dt_s, const std::vector<ObservedVehicle>& world, const EgoObservation& ego,
                            const Lanes& lanes, const DirectorConfig& cfg, double rate_mps2, double type_accel_mps2) {

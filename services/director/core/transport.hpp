@@ -49,6 +49,17 @@ struct TransportCommand {
 inline constexpr double kMaxDriveShare = 0.8;
 double drive_speed_mps(double speed_mps, double actor_speed_mps, double rate_mps2, double type_accel_mps2);
 
+// An actor ahead of the ego in the ego's lane, nearer to it than its start (`start_ahead_m`, at a
+// speed relative to the ego's, `start_offset_mps`), is already where the play wants it relative to
+// the ego: it drives at least at its start speed relative to the ego now, opening the gap to its
+// start over kOpenToStart_s (at most kOpenToStartMax_mps faster). Paced by the plan instead, it
+// held the ego up, which moved the estimated start later and its plan slower with it (traced,
+// lead vehicle seed 41, stop 30: the lead 20-40 m ahead, both from 29 to 1 m/s in 50 s). Below 0:
+// no floor (elsewhere, or already beyond its start).
+inline constexpr double kOpenToStart_s = 10.0;
+inline constexpr double kOpenToStartMax_mps = 2.0;
+double ego_pace_floor_mps(double ahead_of_ego_m, double start_ahead_m, double ego_speed_mps, double start_offset_mps);
+
 // `previous_cmd_mps`: the speed of the previous step's command (< 0: none yet).
 // `rate_mps2`: the planning rate (transport_rate_mps2 for the actor's type); `type_accel_mps2`:
 // the type's mean acceleration (0: unknown, no lead on the desired speed).
