@@ -290,9 +290,10 @@ TEST(PlayPhases, AStartConditionStillNotMetAfterTheWaitFailsWithTheReason) {
   t.out = t.core.step(t.in);
   ASSERT_FALSE(t.out.reports.empty());
   EXPECT_EQ(t.out.reports.front().phase, PlayPhase::kFailed);
-  EXPECT_NE(t.out.reports.front().detail.find("(3.0 s beyond trigger point 2): lead: 20.0 m from its start position"),
-            std::string::npos)
-      << t.out.reports.front().detail;
+  // The cause first, what was missing on passing trigger point 2; then what still was at the end.
+  const std::string& detail = t.out.reports.front().detail;
+  EXPECT_EQ(detail.rfind("start condition not met on passing trigger point 2: lead: ", 0), 0u) << detail;
+  EXPECT_NE(detail.find("; nor 3.0 s beyond it: lead: 20.0 m from its start position"), std::string::npos) << detail;
 }
 
 TEST(PlayPhases, WithoutAWaitTheStartConditionIsCheckedAtTriggerPoint2) {

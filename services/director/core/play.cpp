@@ -170,6 +170,7 @@ PlayOutput PlayRun::step(const PlayInput& in) {
           passed_trigger2 = true;
         }
         const std::string problems = start_problems(in);
+        if (passed_trigger2) problems_at_trigger2_ = problems;
         if (problems.empty() || in.ego.time_s - trigger2_time_s_ >= play_.handover_wait_s - 1e-9) {
           hand_over(in, problems, out);
           return out;
@@ -394,7 +395,13 @@ void PlayRun::hand_over(const PlayInput& in, const std::string& problems, PlayOu
   if (!problems.empty()) {
     phase_ = PlayPhase::kFailed;
     release_all(in, out);
-    report(in, out, "start condition not met" + after + ": " + problems);
+    // After the wait, first what was missing on passing trigger point 2, the cause: by the end of
+    // the wait oncoming actors have moved on 40-50 m a second and read as far off.
+    const std::string then = waited_s > 1e-9 && !problems_at_trigger2_.empty()
+                                 ? " on passing trigger point 2: " + problems_at_trigger2_ + "; nor " +
+                                       fmt1(waited_s) + " s beyond it"
+                                 : after;
+    report(in, out, "start condition not met" + then + ": " + problems);
     return;
   }
   phase_ = PlayPhase::kHandedOver;

@@ -167,6 +167,7 @@ class PlayRun {
   double reported_estimate_s_ = -1.0;
   double handover_time_s_ = -1.0;
   double trigger2_time_s_ = -1.0;  // when the ego passed trigger point 2 (< 0: not yet)
+  std::string problems_at_trigger2_;  // what the start condition lacked on passing trigger point 2
   double release_until_s_ = -1.0;
   double last_cast_attempt_s_ = -1e9;
   double last_progress_report_s_ = -1e9;
