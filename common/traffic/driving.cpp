@@ -321,17 +321,17 @@ Decision decide(const Vehicle& v, const LaneIndex& index, const DrivingEnvironme
     d.mandatory_change = plan.mandatory;
   }
 
+  const double gap_seeking_mps2 = gap_seeking_cap_mps2(v, cf, index, d.lane_change);
   // Easing down to a lower speed the director asks for: car following as if at the present speed,
   // the free-road slowing bounded apart (eases_down).
-  CarFollowingParams following = cf;
   double easing_mps2 = kInfinity;
   if (eases_down(v, cf.idm.desired_speed_mps)) {
     easing_mps2 = easing_accel_mps2(cf, v.speed_mps);
-    following.idm.desired_speed_mps = v.speed_mps;
+    cf.idm.desired_speed_mps = v.speed_mps;
   }
-  const Longitudinal lon = longitudinal(v, following, index, env, clear_of_oncoming);
+  const Longitudinal lon = longitudinal(v, cf, index, env, clear_of_oncoming);
   d.hdm_decided_mps2 = lon.decided_mps2;
-  double a = std::min({lon.applied_mps2, accel_cap, gap_seeking_cap_mps2(v, cf, index, d.lane_change), easing_mps2});
+  double a = std::min({lon.applied_mps2, accel_cap, gap_seeking_mps2, easing_mps2});
   if (scripted) a = scripted_accel_mps2(v, a, cf.idm.max_accel_mps2, env.dt_s());
   d.accel_mps2 = std::max(limit_rise_mps2(v, a, env.dt_s()), -v.driver.max_decel_mps2);
   d.emergency = lon.emergency;

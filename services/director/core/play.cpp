@@ -328,11 +328,11 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
     const bool in_ego_lane = rc.direction == in.ego.direction && !rc.absolute_speed &&
                              slots[r].lane == staged_lane(in) && v->lane == slots[r].lane && v->target_lane == v->lane;
     if (in_ego_lane) {
-      const double floor = ego_pace_floor_mps(sign(in.ego.direction) * (v->s_m - in.ego.s_m), rc.ahead_m,
-                                              in.ego.speed_mps, rc.speed_mps);
-      if (floor > t.speed_mps) {
-        t.speed_mps = floor;
-        t.drive_mps = drive_speed_mps(floor, v->speed_mps, rate, type_accel);
+      const double pace_mps = ego_pace_floor_mps(sign(in.ego.direction) * (v->s_m - in.ego.s_m), rc.ahead_m,
+                                                 in.ego.speed_mps, rc.speed_mps);
+      if (pace_mps > t.speed_mps) {
+        t.speed_mps = pace_mps;
+        t.drive_mps = drive_speed_mps(pace_mps, v->speed_mps, rate, type_accel);
       }
     }
     role.command_mps = t.speed_mps;
