@@ -104,4 +104,9 @@ std::string Child::log_tail(std::size_t lines) const {
   return out;
 }
 
+bool aborted_in_fastdds_lease_race(const Child& c, std::size_t log_lines) {
+  return c.exit_code() == 128 + SIGABRT && !c.killed_by_us() &&
+         c.log_tail(log_lines).find("check_remote_participant_liveliness") != std::string::npos;
+}
+
 }  // namespace entourage::launcher

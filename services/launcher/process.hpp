@@ -43,4 +43,10 @@ class Child {
   bool killed_by_us_ = false;
 };
 
+// Did the process abort on Fast DDS 2.9.1's assertion in PDP::check_remote_participant_liveliness
+// (named in the last `log_lines` of its log)? That assertion fails when a peer leaves the domain
+// just as the lease timer of that peer fires (the peer's record is cleared before the timer gets
+// the lock): it happens only as participants leave, after their work is done.
+bool aborted_in_fastdds_lease_race(const Child& c, std::size_t log_lines);
+
 }  // namespace entourage::launcher

@@ -265,14 +265,23 @@ Run::Outcome Run::drive() {
   }
 }
 
+// One service at a time, in the order they were started (the ego, the source of the steps, first;
+// the recorder last), so that only one participant leaves the domain at a time.
 bool Run::stop_all() {
   bool clean = true;
-  for (auto& c : children_) c->signal(SIGTERM);
   for (auto& c : children_) {
+    c->signal(SIGTERM);
     if (!c->wait(kStopTimeout_s)) {
       std::cerr << "entourage: " << c->name() << " did not stop within " << kStopTimeout_s << " s; killing it\n";
       c->signal(SIGKILL);
       c->wait(kStopTimeout_s);
+    }
+    if (aborted_in_fastdds_lease_race(*c, kLogTailLines)) {
+      std::cerr << "entourage: warning: " << c->name()
+                << " aborted inside Fast DDS while leaving the DDS domain (a known race of Fast DDS 2.9.1, "
+                   "PDP::check_remote_participant_liveliness; see "
+                << c->log_path() << "); its work was done\n";
+      continue;
     }
     if (c->killed_by_us() || c->exit_code().value_or(1) != 0) clean = false;
   }
@@ -312,10 +321,12 @@ int Run::execute() {
   const Outcome outcome = drive();
   wall_s_ = std::chrono::duration<double>(Clock::now() - started_).count();
   if (outcome == Outcome::kInterrupted) std::cout << (tty_ ? "\n" : "") << "entourage: interrupted; stopping the services\n";
-  const bool clean = stop_all();
   ReportInput in{opt_.record, logs_dir_, sc_.config, wall_s_, opt_.realtime, monitor_->latencies_ms()};
+  // The launcher leaves the domain before the services do: it then never handles a service's
+  // leaving (where Fast DDS 2.9.1's lease race lies, see stop_all).
   node_.reset();  // first: its readers' handlers are the monitor's
   monitor_.reset();
+  const bool clean = stop_all();
   const bool report_ok = print_report(in, std::cout);
   if (outcome == Outcome::kFailed || !clean) {
     std::cerr << "entourage: the run failed; see the logs in " << logs_dir_ << "/\n";
