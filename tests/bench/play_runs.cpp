@@ -148,6 +148,7 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
   std::set<std::pair<VehicleId, VehicleId>> overlapping;     // pairs seen overlapping (each counted once)
   std::set<VehicleId> ego_contacts;
   std::map<VehicleId, double> beside_since_s;  // vehicles beside the ego now: since when
+  std::map<VehicleId, int> signal_lane;  // vehicles signalling now: their lane when it came on
   SpeedTally around_ego;                         // trigger point 1 to 2
   double first_estimate_s = -1.0;
   bool seen_beyond_trigger2 = false;  // the first report once the ego passed trigger point 2
@@ -227,6 +228,23 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
         }
       }
       last_accel[v.id] = {v.step, v.accel_mps2};
+    }
+    // Indicators on and off again in the same lane (inner region, while preparing).
+    for (const ObservedVehicle& v : world) {
+      if (!preparing || v.owner.role != Role::kMicro || !w.in_inner(v.s_m) || v.control == ControlMode::kControlled ||
+          v.control == ControlMode::kReleasing) {
+        signal_lane.erase(v.id);
+        continue;
+      }
+      SignalsCalledOff& kind = v.control == ControlMode::kAutonomous ? r.called_off_autonomous : r.called_off_commanded;
+      kind.vehicle_s += dt;
+      const auto on = signal_lane.find(v.id);
+      if (v.indicator != 0) {
+        if (on == signal_lane.end()) signal_lane.emplace(v.id, v.lane);
+      } else if (on != signal_lane.end()) {
+        if (on->second == v.lane) ++kind.count;
+        signal_lane.erase(on);
+      }
     }
     // Those beside the ego now keep the time they came beside it; the others drop out.
     std::map<VehicleId, double> beside_now;

@@ -41,6 +41,11 @@ struct MotionExtremes {
   }
 };
 
+struct SignalsCalledOff {
+  int count = 0;
+  double vehicle_s = 0.0;  // time the vehicles of this kind spent in the inner region
+};
+
 struct PlayRunResult {
   director::PlayPhase final_phase = director::PlayPhase::kWaiting;
   bool handed_over = false;
@@ -82,6 +87,11 @@ struct PlayRunResult {
     return traffic_speed_mps > 0.0 && traffic_speed_undirected_mps > 0.0 ? traffic_speed_mps / traffic_speed_undirected_mps
                                                                         : -1.0;
   }
+  // Signals a driver sees and that come to nothing: a vehicle in the inner region whose indicator
+  // went on and off again in the same lane while the play was prepared (a lane change called
+  // off), under a director's command and autonomous, with the time each kind spent there.
+  SignalsCalledOff called_off_commanded;
+  SignalsCalledOff called_off_autonomous;
   int created = 0;
   int created_in_view = 0;           // born inside the inner region: must be 0
   int overlaps_with_actor = 0;       // vehicle pairs overlapping where one is an actor
