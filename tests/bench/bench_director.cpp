@@ -132,10 +132,8 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
     a_beside.push_back(r.actor_beside_ego_s);
     if (r.traffic_slowed_to() > 0.0) slowed.push_back(r.traffic_slowed_to());
     o_beside.push_back(r.autonomous_beside_ego_s);
-    off_commanded.count += r.called_off_commanded.count;
-    off_commanded.vehicle_s += r.called_off_commanded.vehicle_s;
-    off_autonomous.count += r.called_off_autonomous.count;
-    off_autonomous.vehicle_s += r.called_off_autonomous.vehicle_s;
+    off_commanded.add(r.called_off_commanded);
+    off_autonomous.add(r.called_off_autonomous);
     created += r.created;
     in_view += r.created_in_view;
     overlaps_actor += r.overlaps_with_actor;
@@ -179,12 +177,11 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
               "  actors      %.1f / %.1f / %.1f s\n  autonomous  %.1f / %.1f / %.1f s\n",
               bench::kBesideEgo_m, percentile(a_beside, 0.5), percentile(a_beside, 0.95), percentile(a_beside, 1.0),
               percentile(o_beside, 0.5), percentile(o_beside, 0.95), percentile(o_beside, 1.0));
-  auto per_hour = [](const bench::SignalsCalledOff& o) { return o.vehicle_s > 0.0 ? 3600.0 * o.count / o.vehicle_s : 0.0; };
   std::printf("lane changes called off (indicator on, then off in the same lane; inner region, while preparing)\n"
               "  commanded   %d in %.1f vehicle-hours (%.1f per vehicle-hour)\n"
               "  autonomous  %d in %.1f vehicle-hours (%.1f per vehicle-hour)\n",
-              off_commanded.count, off_commanded.vehicle_s / 3600.0, per_hour(off_commanded), off_autonomous.count,
-              off_autonomous.vehicle_s / 3600.0, per_hour(off_autonomous));
+              off_commanded.count, off_commanded.vehicle_s / 3600.0, off_commanded.per_vehicle_hour(),
+              off_autonomous.count, off_autonomous.vehicle_s / 3600.0, off_autonomous.per_vehicle_hour());
   std::printf("vehicles created               %d   of which inside the view: %d\n", created, in_view);
   std::printf("overlapping pairs              with an actor %d   autonomous only %d   ego touching an actor %d\n",
               overlaps_actor, overlaps_other, ego_contacts);

@@ -44,6 +44,11 @@ struct MotionExtremes {
 struct SignalsCalledOff {
   int count = 0;
   double vehicle_s = 0.0;  // time the vehicles of this kind spent in the inner region
+  void add(const SignalsCalledOff& o) {
+    count += o.count;
+    vehicle_s += o.vehicle_s;
+  }
+  double per_vehicle_hour() const { return vehicle_s > 0.0 ? 3600.0 * count / vehicle_s : 0.0; }
 };
 
 struct PlayRunResult {
