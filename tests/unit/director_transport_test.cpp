@@ -146,6 +146,27 @@ TEST(Transport, BesideAStandingWaitingVehicleTheOneBehindLetsItIn) {
   EXPECT_EQ(g->id, 2U);
 }
 
+TEST(Transport, AVehicleAskedToChangeLanesKeepsThatRequestWhileItWaitsAndForGoodOnceItMoves) {
+  const LaneRequest asked{1, 10.0};  // into lane 1, asked at 10 s
+  ObservedVehicle waiting = vehicle(5, 2000.0, 25.0, 0);
+  waiting.indicator = 1;
+  // Waiting in its lane: another rule's lane (its own, or the other side) is refused for
+  // kHoldLaneRequest_s; then the new one is taken.
+  EXPECT_TRUE(keeps_lane_request(waiting, asked, 0, 10.0 + 0.5 * kHoldLaneRequest_s));
+  EXPECT_TRUE(keeps_lane_request(waiting, asked, 2, 10.0 + 0.5 * kHoldLaneRequest_s));
+  EXPECT_FALSE(keeps_lane_request(waiting, asked, 0, 10.0 + kHoldLaneRequest_s + 0.1));
+  // The same lane asked again (at another speed) is no conflict.
+  EXPECT_FALSE(keeps_lane_request(waiting, asked, 1, 11.0));
+  // Moving over: never reversed, however long it has waited.
+  ObservedVehicle moving = waiting;
+  moving.target_lane = 1;
+  EXPECT_TRUE(keeps_lane_request(moving, asked, 0, 10.0 + 10.0 * kHoldLaneRequest_s));
+  // There: the request is done, and the next may move it again.
+  const ObservedVehicle there = vehicle(5, 2000.0, 25.0, 1);
+  EXPECT_FALSE(keeps_lane_request(there, asked, 0, 11.0));
+  EXPECT_FALSE(keeps_lane_request(waiting, LaneRequest{}, 0, 11.0));  // never asked
+}
+
 TEST(Transport, ZonesOfALaneTooCloseToStandBetweenAreClearedAsOne) {
   const ZoneAtStart a{Direction::kForward, 1, 100.0, 120.0};
   const ZoneAtStart b{Direction::kForward, 1, 130.0, 160.0};  // 10 m beyond a: too close

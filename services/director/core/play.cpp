@@ -458,6 +458,7 @@ void PlayRun::finish_release(const PlayInput& in, PlayOutput& out) {
   }
   for (Role& r : roles_) r.actor = kNoVehicle;
   cleared_.clear();
+  lane_requests_.clear();
 }
 
 }  // namespace entourage::director

@@ -26,6 +26,7 @@
 
 #include "director/core/script.hpp"
 #include "director/core/stage.hpp"
+#include "director/core/transport.hpp"
 #include "director/core/start_time.hpp"
 #include "traffic/actor_control.hpp"
 #include "traffic/handoff.hpp"
@@ -130,6 +131,11 @@ class PlayRun {
   // Vehicles waiting to change into a lane they were asked for are let in (transport.hpp,
   // follower_to_let_in); a vehicle that let one in drives on at its own speed in its lane.
   void let_in(const PlayInput& in, PlayOutput& out);
+  // Whether a vehicle this play holds keeps the lane change it was asked for instead of `lane`
+  // (transport.hpp, keeps_lane_request).
+  bool holds_lane_request(const ObservedVehicle& v, int lane, double now_s) const;
+  // Notes a lane change asked of `v` by `c` (one in its own lane ends a request).
+  void note_lane_request(const ObservedVehicle& v, const ActorControl& c, double now_s);
   // What keeps the start condition from holding now ("" : nothing); sets the roles' errors.
   std::string start_problems(const PlayInput& in);
   // Hands over to the script, or fails with `problems` if there are any.
@@ -161,6 +167,7 @@ class PlayRun {
   std::vector<VehicleId> cleared_;          // vehicles asked to leave a zone
   std::map<VehicleId, VehicleId> letting_in_;  // a vehicle let in -> the one holding back for it
   std::set<VehicleId> leaving_zone_;  // cleared vehicles whose last request was to leave a zone
+  std::map<VehicleId, LaneRequest> lane_requests_;  // lane changes asked of cleared vehicles
   std::vector<ActorControl> scripted_;      // per role, once handed over
   std::optional<Script> script_;
   double estimated_start_s_ = -1.0;

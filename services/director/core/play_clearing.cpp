@@ -17,6 +17,24 @@ constexpr double kHoldLanesBefore_s = 15.0;
 constexpr double kBesideZone_m = 30.0;
 }  // namespace
 
+bool PlayRun::holds_lane_request(const ObservedVehicle& v, int lane, double now_s) const {
+  const auto sent = sent_.find(v.id);
+  const auto asked = lane_requests_.find(v.id);
+  if (sent == sent_.end() || sent->second.mode != ControlMode::kTransported || asked == lane_requests_.end()) {
+    return false;
+  }
+  return keeps_lane_request(v, asked->second, lane, now_s);
+}
+
+void PlayRun::note_lane_request(const ObservedVehicle& v, const ActorControl& c, double now_s) {
+  if (c.lane < 0 || c.lane == v.lane) {
+    lane_requests_.erase(v.id);
+    return;
+  }
+  const auto asked = lane_requests_.find(v.id);
+  if (asked == lane_requests_.end() || asked->second.lane != c.lane) lane_requests_[v.id] = {c.lane, now_s};
+}
+
 void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
                           PlayOutput& out) {
   const std::vector<ZoneAtStart> zones = zones_of(staged_, in.ego.direction, staged_lane(in), aim.ego_s_m, setting_.lanes);
@@ -43,6 +61,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   // the handover); a speed is given with the lead actors get (drive_speed_mps).
   auto clear = [&](std::size_t i, const Clearance& c, bool off_a_zone) {
     const ObservedVehicle& v = in.world[i];
+    if (is_cleared(v.id) && holds_lane_request(v, c.lane, in.ego.time_s)) return;
     if (off_a_zone) {
       leaving_zone_.insert(v.id);
     } else {
@@ -57,7 +76,9 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
       const double type_accel = accel_of(setting_.type_accel_mps2, v.type_index);
       drive_mps = drive_speed_mps(drive_mps, v.speed_mps, transport_rate_mps2(setting_.director, type_accel), type_accel);
     }
-    command(v.id, transported(drive_mps, c.lane), in.step, out);
+    const ActorControl control = transported(drive_mps, c.lane);
+    note_lane_request(v, control, in.ego.time_s);
+    command(v.id, control, in.step, out);
   };
   auto ours_or_free = [&](std::size_t i) { return is_cleared(in.world[i].id) || in.available[i]; };  // not an actor
   for (std::size_t i = 0; i < in.world.size(); ++i) {
@@ -109,7 +130,10 @@ void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
   };
   // A vehicle that held back drives on as it likes, in its lane.
   auto stop_holding_back = [&](VehicleId id) {
-    if (const ObservedVehicle* v = find(in, id)) command(id, transported(kOwnDesiredSpeed_mps, v->lane), in.step, out);
+    const ObservedVehicle* v = find(in, id);
+    if (v == nullptr) return;
+    lane_requests_.erase(id);
+    command(id, transported(kOwnDesiredSpeed_mps, v->lane), in.step, out);
   };
   auto holds_back = [&](VehicleId id) {
     return std::any_of(letting_in_.begin(), letting_in_.end(), [&](const auto& e) { return e.second == id; });
@@ -145,6 +169,7 @@ void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
     if ((holds_back(f->id) && !for_it_already) || !(is_cleared(f->id) || in.available[i])) {
       continue;  // it lets in another, or it is an actor or another play's
     }
+    if (is_cleared(f->id) && holds_lane_request(*f, f->lane, in.ego.time_s)) continue;  // it waits to move over itself
     // One vehicle holds back for each: one that did so before and is no longer just behind it (it
     // fell back, or another came between) drives on as it likes.
     if (before != letting_in_.end() && !for_it_already) stop_holding_back(before->second);
@@ -153,6 +178,7 @@ void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
       in.available[i] = false;
     }
     letting_in_[id] = f->id;
+    lane_requests_.erase(f->id);
     command(f->id, transported(std::max(0.0, v.speed_mps - kLetIn_mps), f->lane), in.step, out);
   }
 }

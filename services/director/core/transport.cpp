@@ -314,6 +314,12 @@ std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, co
   return std::nullopt;
 }
 
+bool keeps_lane_request(const ObservedVehicle& v, const LaneRequest& asked, int lane, double now_s) {
+  if (asked.lane < 0 || asked.lane == lane || v.lane == asked.lane) return false;
+  if (v.target_lane == asked.lane) return true;  // moving over: never reversed midway
+  return now_s - asked.since_s < kHoldLaneRequest_s;
+}
+
 const ObservedVehicle* follower_to_let_in(const ObservedVehicle& waiting, int lane,
                                           const std::vector<ObservedVehicle>& world, const EgoObservation& ego) {
   const double front_p = waiting.progress_m() + 0.5 * waiting.length_m;
