@@ -182,6 +182,12 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
               "  autonomous  %d in %.1f vehicle-hours (%.1f per vehicle-hour)\n",
               off_commanded.count, off_commanded.vehicle_s / 3600.0, off_commanded.per_vehicle_hour(),
               off_autonomous.count, off_autonomous.vehicle_s / 3600.0, off_autonomous.per_vehicle_hour());
+  std::printf("indicator on, per signal that went off in view: median / p95 / max\n"
+              "  commanded   %.1f / %.1f / %.1f s   (%zu signals)\n  autonomous  %.1f / %.1f / %.1f s   (%zu signals)\n",
+              percentile(off_commanded.signal_s, 0.5), percentile(off_commanded.signal_s, 0.95),
+              percentile(off_commanded.signal_s, 1.0), off_commanded.signal_s.size(),
+              percentile(off_autonomous.signal_s, 0.5), percentile(off_autonomous.signal_s, 0.95),
+              percentile(off_autonomous.signal_s, 1.0), off_autonomous.signal_s.size());
   std::printf("vehicles created               %d   of which inside the view: %d\n", created, in_view);
   std::printf("overlapping pairs              with an actor %d   autonomous only %d   ego touching an actor %d\n",
               overlaps_actor, overlaps_other, ego_contacts);

@@ -148,7 +148,11 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
   std::set<std::pair<VehicleId, VehicleId>> overlapping;     // pairs seen overlapping (each counted once)
   std::set<VehicleId> ego_contacts;
   std::map<VehicleId, double> beside_since_s;  // vehicles beside the ego now: since when
-  std::map<VehicleId, int> signal_lane;  // vehicles signalling now: their lane when it came on
+  struct SignalOn {
+    int lane = 0;          // its lane when the indicator came on
+    double since_s = 0.0;  // and when
+  };
+  std::map<VehicleId, SignalOn> signal_lane;  // vehicles signalling now
   SpeedTally around_ego;                         // trigger point 1 to 2
   double first_estimate_s = -1.0;
   bool seen_beyond_trigger2 = false;  // the first report once the ego passed trigger point 2
@@ -239,10 +243,12 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
       SignalsCalledOff& kind = v.control == ControlMode::kAutonomous ? r.called_off_autonomous : r.called_off_commanded;
       kind.vehicle_s += dt;
       const auto on = signal_lane.find(v.id);
+      const double now_s = static_cast<double>(v.step) * dt;
       if (v.indicator != 0) {
-        if (on == signal_lane.end()) signal_lane.emplace(v.id, v.lane);
+        if (on == signal_lane.end()) signal_lane.emplace(v.id, SignalOn{v.lane, now_s});
       } else if (on != signal_lane.end()) {
-        if (on->second == v.lane) ++kind.count;
+        if (on->second.lane == v.lane) ++kind.count;
+        kind.signal_s.push_back(now_s - on->second.since_s);
         signal_lane.erase(on);
       }
     }

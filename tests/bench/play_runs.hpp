@@ -44,9 +44,13 @@ struct MotionExtremes {
 struct SignalsCalledOff {
   int count = 0;
   double vehicle_s = 0.0;  // time the vehicles of this kind spent in the inner region
+  // How long each indicator that went off in view had been on (changes made, with their lateral
+  // movement, and changes called off): a request held too long shows as a driver signalling on.
+  std::vector<double> signal_s;
   void add(const SignalsCalledOff& o) {
     count += o.count;
     vehicle_s += o.vehicle_s;
+    signal_s.insert(signal_s.end(), o.signal_s.begin(), o.signal_s.end());
   }
   double per_vehicle_hour() const { return vehicle_s > 0.0 ? 3600.0 * count / vehicle_s : 0.0; }
 };

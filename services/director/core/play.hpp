@@ -20,7 +20,6 @@
 #include <cstdint>
 #include <map>
 #include <optional>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -166,7 +165,6 @@ class PlayRun {
   std::map<VehicleId, ActorControl> sent_;  // the last control written to each vehicle held
   std::vector<VehicleId> cleared_;          // vehicles asked to leave a zone
   std::map<VehicleId, VehicleId> letting_in_;  // a vehicle let in -> the one holding back for it
-  std::set<VehicleId> leaving_zone_;  // cleared vehicles whose last request was to leave a zone
   std::map<VehicleId, LaneRequest> lane_requests_;  // lane changes asked of cleared vehicles
   std::vector<ActorControl> scripted_;      // per role, once handed over
   std::optional<Script> script_;

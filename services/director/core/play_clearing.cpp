@@ -59,14 +59,9 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
                                     role_lanes, setting_.lanes, setting_.director, actors};
   // Vehicle i, ours from now on, is told to clear out (a cleared one keeps its last command until
   // the handover); a speed is given with the lead actors get (drive_speed_mps).
-  auto clear = [&](std::size_t i, const Clearance& c, bool off_a_zone) {
+  auto clear = [&](std::size_t i, const Clearance& c) {
     const ObservedVehicle& v = in.world[i];
     if (is_cleared(v.id) && holds_lane_request(v, c.lane, in.ego.time_s)) return;
-    if (off_a_zone) {
-      leaving_zone_.insert(v.id);
-    } else {
-      leaving_zone_.erase(v.id);
-    }
     if (!is_cleared(v.id)) {
       cleared_.push_back(v.id);
       in.available[i] = false;
@@ -83,7 +78,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   auto ours_or_free = [&](std::size_t i) { return is_cleared(in.world[i].id) || in.available[i]; };  // not an actor
   for (std::size_t i = 0; i < in.world.size(); ++i) {
     if (!ours_or_free(i)) continue;
-    if (const auto c = clear_out(in.world[i], situation)) clear(i, *c, true);
+    if (const auto c = clear_out(in.world[i], situation)) clear(i, *c);
   }
   // Vehicles in an actor's way to its slot make way where they can.
   for (std::size_t r = 0; r < roles_.size(); ++r) {
@@ -94,7 +89,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
     for (std::size_t i = 0; i < in.world.size(); ++i) {
       if (!ours_or_free(i)) continue;
       if (const auto c = make_way(in.world[i], slots[r], *actor, roles_[r].command_mps, actor_cmd_lane, situation)) {
-        clear(i, *c, false);
+        clear(i, *c);
       }
     }
   }
@@ -148,7 +143,6 @@ void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
   }
   const std::vector<VehicleId> cleared = cleared_;
   for (VehicleId id : cleared) {
-    if (leaving_zone_.count(id) == 0) continue;  // making way for an actor: it may wait
     const int lane = waiting_for_lane(id);
     // One holding back for another is not let in itself meanwhile.
     if (lane < 0 || holds_back(id)) continue;

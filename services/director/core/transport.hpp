@@ -18,8 +18,8 @@
 // to leave: to a neighbouring lane that is no zone's, or to be ahead of the zone or behind it at
 // the start by a speed within the band around its own, planned to be out a few seconds early
 // (not on one lane per direction: there it would have to overtake or be overtaken, which is left
-// to its own driving). A vehicle cleared off a zone that waits to change lanes is let in by the
-// vehicle just behind it in the target lane (follower_to_let_in).
+// to its own driving). A vehicle cleared off a zone or out of an actor's way that waits to change
+// lanes is let in by the vehicle just behind it in the target lane (follower_to_let_in).
 
 #include <optional>
 #include <vector>
@@ -150,7 +150,7 @@ std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, co
 // drivers' 3 (services/director/README.md, stop 32). A vehicle asked for a lane
 // change keeps that request while it waits to move over, for kHoldLaneRequest_s, whatever another
 // rule asks of it meanwhile (its speed included), and for good once it moves.
-inline constexpr double kHoldLaneRequest_s = 8.0;
+inline constexpr double kHoldLaneRequest_s = 20.0;
 struct LaneRequest {
   int lane = -1;         // the lane it was asked to change into
   double since_s = 0.0;  // when it was first asked for it
