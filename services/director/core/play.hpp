@@ -25,8 +25,8 @@
 
 #include "director/core/script.hpp"
 #include "director/core/stage.hpp"
-#include "director/core/transport.hpp"
 #include "director/core/start_time.hpp"
+#include "director/core/transport.hpp"
 #include "traffic/actor_control.hpp"
 #include "traffic/handoff.hpp"
 #include "traffic/vehicle.hpp"
