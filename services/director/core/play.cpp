@@ -291,6 +291,7 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
       const ObservedVehicle& v = in.world[static_cast<std::size_t>(chosen[k])];
       in.available[static_cast<std::size_t>(chosen[k])] = false;
       cleared_.erase(std::remove(cleared_.begin(), cleared_.end(), v.id), cleared_.end());
+      lane_requests_.erase(v.id);  // an actor now: its lane is the role's, not a clearing request
       role = Role{v.id, false, in.step, -1.0, 0.0, 0.0};
       detail += (detail.empty() ? "" : ", ") + rc.name + " = vehicle " + std::to_string(v.id);
       continue;
