@@ -1,6 +1,7 @@
 #include "traffic/fleet.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace entourage {
 
@@ -22,10 +23,11 @@ void Fleet::adopt(const Handoff& h, Step last_step, double dt_s) {
   }
 }
 
-Vehicle* Fleet::find(VehicleId id) {
-  Vehicle probe;
-  probe.id = id;
-  auto it = std::lower_bound(vehicles_.begin(), vehicles_.end(), probe, by_id);
+Vehicle* Fleet::find(VehicleId id) { return const_cast<Vehicle*>(std::as_const(*this).find(id)); }
+
+const Vehicle* Fleet::find(VehicleId id) const {
+  auto it = std::lower_bound(vehicles_.begin(), vehicles_.end(), id,
+                             [](const Vehicle& v, VehicleId wanted) { return v.id < wanted; });
   return it != vehicles_.end() && it->id == id ? &*it : nullptr;
 }
 
@@ -79,6 +81,7 @@ void build_index(LaneIndex& index, const Fleet& fleet, const std::vector<Observe
   }
   if (ego != nullptr) add_to_index(index, *ego);
   index.sort();
+  index.set_drivers(&fleet);
 }
 
 }  // namespace entourage

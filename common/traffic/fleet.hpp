@@ -19,6 +19,7 @@ class Fleet {
   void adopt(const Handoff& h, Step last_step, double dt_s);
   bool owns(VehicleId id) const;
   Vehicle* find(VehicleId id);  // nullptr if not owned
+  const Vehicle* find(VehicleId id) const;
   std::size_t size() const { return vehicles_.size(); }
   std::vector<Vehicle>& vehicles() { return vehicles_; }
   const std::vector<Vehicle>& vehicles() const { return vehicles_; }
@@ -56,7 +57,8 @@ std::size_t adopt_handoffs(Fleet& fleet, HandoffInbox& inbox, std::vector<Handof
 Occupant as_occupant(const Vehicle& v);
 
 // Fills `index` with the fleet, every vehicle of the world that the fleet does not own (the
-// world's copy of owned vehicles is the fleet's own state), and the ego.
+// world's copy of owned vehicles is the fleet's own state), and the ego; the fleet becomes the
+// index's drivers (LaneIndex::drivers).
 void build_index(LaneIndex& index, const Fleet& fleet, const std::vector<ObservedVehicle>& world,
                  const EgoObservation* ego);
 

@@ -20,6 +20,15 @@ LaneChangeOption evaluate_lane_change(const Vehicle& v, const CarFollowingParams
                                       int target);
 LaneChangeOption evaluate_lane_change(const Vehicle& v, const LaneIndex& index, int target);
 
+// MOBIL judges the followers' accelerations (Kesting, Treiber & Helbing 2007) by each driver's own
+// car-following model: that of vehicle `id` where the service that built the index drives it
+// (LaneIndex::drivers), else `judge`, the deciding driver's own parameters (a vehicle driven by
+// another service, or the ego).
+const CarFollowingParams& model_of(VehicleId id, const LaneIndex& index, const CarFollowingParams& judge);
+
+// The acceleration of `other` behind `leader` (null: a free road) by the base model `model`.
+double follower_accel_mps2(const CarFollowingParams& model, const Occupant& other, const Occupant* leader);
+
 // The lane `v` must move towards now (a closure of its lane ahead, or a requested lane), or -1.
 int mandatory_target_lane(const Vehicle& v, const DrivingEnvironment& env);
 

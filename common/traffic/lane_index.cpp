@@ -42,6 +42,7 @@ LaneIndex::LaneIndex(int lanes_forward, int lanes_backward)
       backward_(static_cast<std::size_t>(lanes_forward_ + lanes_backward_)) {}
 
 void LaneIndex::clear() {
+  drivers_.fleet = nullptr;
   for (auto& l : forward_) l.clear();
   for (auto& l : backward_) l.clear();
 }

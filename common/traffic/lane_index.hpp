@@ -18,6 +18,8 @@
 
 namespace entourage {
 
+class Fleet;
+
 struct Occupant {
   VehicleId id = 0;
   double progress_m = 0.0;  // sign(direction) * s of the vehicle's centre
@@ -35,7 +37,7 @@ class LaneIndex {
  public:
   LaneIndex(int lanes_forward, int lanes_backward);
 
-  void clear();
+  void clear();  // also forgets the drivers (drivers())
   void add(Direction dir, int lane, const Occupant& o);  // lanes outside the road are ignored
   void sort();  // call after the last add and before queries
 
@@ -64,9 +66,27 @@ class LaneIndex {
   // own direction's sense (use oncoming_gap()).
   const Occupant* oncoming(Direction dir, int lane, double progress_m) const;
 
+  // The vehicles the service that built the index drives itself, whose drivers' own parameters
+  // may be used for them (MOBIL's followers, lane_changes.cpp); null: none known (build_index
+  // sets it; the fleet must outlive the index's use).
+  // A copy or move of the index knows no drivers until it is built again: the fleet belongs to the
+  // service object that built it (a copied core's index would point into the original's fleet).
+  void set_drivers(const Fleet* fleet) { drivers_.fleet = fleet; }
+  const Fleet* drivers() const { return drivers_.fleet; }
+
  private:
   std::vector<Occupant>* slot(Direction dir, int lane);
 
+  struct NotCopied {
+    const Fleet* fleet = nullptr;
+    NotCopied() = default;
+    NotCopied(const NotCopied& /*other*/) {}
+    NotCopied& operator=(const NotCopied& /*other*/) {
+      fleet = nullptr;
+      return *this;
+    }
+  };
+  NotCopied drivers_;
   int lanes_forward_;
   int lanes_backward_;
   std::vector<std::vector<Occupant>> forward_;

@@ -6,6 +6,7 @@
 #include "behaviour/mobil.hpp"
 #include "core_test_util.hpp"
 #include "traffic/driving.hpp"
+#include "traffic/fleet.hpp"
 #include "traffic/lane_changes.hpp"
 #include "traffic/lane_index.hpp"
 
@@ -104,6 +105,44 @@ TEST_F(LaneChangeSituation, NoChangeInFrontOfAFastCloseFollower) {
   index.sort();
   const LaneChangeOption opt = evaluate_lane_change(me, index, 1);
   EXPECT_FALSE(opt.safe);
+}
+
+// MOBIL's new follower is judged by its own model where the service drives it (the index's
+// drivers), by the changer's parameters otherwise: a gentle changer (a = 1.0 m/s^2, T = 0.9 s)
+// finds 15 m in front of a car at its own speed safe by its own standards (about -2.1 m/s^2),
+// which that car's own model (a = 2.0 m/s^2, T = 1.6 s) answers with braking far beyond b_safe.
+TEST_F(LaneChangeSituation, TheNewFollowerIsJudgedByItsOwnModelWhereThisServiceDrivesIt) {
+  Vehicle me = car(1, 0, 1000.0, 26.0, 36.0);
+  me.driver.car_following.idm.max_accel_mps2 = 1.0;
+  me.driver.car_following.idm.time_gap_s = 0.9;
+  Vehicle follower = car(3, 1, 1000.0 - 4.5 - 15.0, 26.0, 36.0);
+  follower.driver.car_following.idm.max_accel_mps2 = 2.0;
+  follower.driver.car_following.idm.time_gap_s = 1.6;
+  add(me);
+  add(car(2, 0, 1040.0, 20.0, 20.0));  // a slower car ahead: the change pays
+  add(follower);
+  index.sort();
+  const double judged_by_me = follower_accel_mps2(me.driver.car_following, {3, follower.s_m, 26.0, 0.0, 4.5},
+                                                  &index.lane(Direction::kForward, 0)[0]);
+  EXPECT_GT(judged_by_me, -me.driver.mobil.safe_decel_mps2);
+  EXPECT_TRUE(evaluate_lane_change(me, index, 1).safe);  // nobody's drivers known
+
+  Fleet drivers;
+  Handoff h;
+  h.vehicle = follower;
+  drivers.adopt(h, 0, 0.1);
+  index.set_drivers(&drivers);
+  EXPECT_EQ(&model_of(3, index, me.driver.car_following), &drivers.find(3)->driver.car_following);
+  EXPECT_EQ(&model_of(2, index, me.driver.car_following), &me.driver.car_following);  // not driven here
+  EXPECT_LT(follower_accel_mps2(follower.driver.car_following, {3, follower.s_m, 26.0, 0.0, 4.5},
+                                &index.lane(Direction::kForward, 0)[0]),
+            -2.0 * me.driver.mobil.safe_decel_mps2);
+  EXPECT_FALSE(evaluate_lane_change(me, index, 1).safe);
+  const LaneIndex copy = index;  // a copied core's index must not point into the original's fleet
+  EXPECT_EQ(copy.drivers(), nullptr);
+  EXPECT_TRUE(evaluate_lane_change(me, copy, 1).safe);
+  index.clear();
+  EXPECT_EQ(index.drivers(), nullptr);
 }
 
 TEST_F(LaneChangeSituation, FreeCarReturnsToTheRightLane) {

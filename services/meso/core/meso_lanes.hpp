@@ -5,7 +5,9 @@
 //
 //   pass     its gap-limited speed is below its desired speed by more than kBlockedSpeedLoss,
 //            the lane to the left has room ahead (gap >= s0 + v T) and behind (the follower's
-//            gap >= s0 + v_f T), and its leader there is faster than the present one
+//            gap >= s0 + v_f T, and the follower would not brake harder than MOBIL's b_safe behind
+//            it, by its own model where meso drives it), and its leader there is faster than the
+//            present one
 //   keep right  the lane to the right has room ahead for twice the safe gap, a leader there that
 //            would not hold it up, and room behind
 //
