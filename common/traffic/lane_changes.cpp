@@ -56,21 +56,15 @@ LaneChangeOption evaluate_lane_change(const Vehicle& v, const CarFollowingParams
   s.to_right = target < v.lane;
   // The safety criterion first: an unsafe change is refused whatever its incentive.
   s.self_after_mps2 = accel_behind(v, cf, lead_new);
-  if (follow_new != nullptr) {
-    s.new_follower_after_mps2 =
-        follower_accel_mps2(model_of(follow_new->id, index, cf), *follow_new, &self);
-  }
+  const CarFollowingParams* new_follower_cf = follow_new != nullptr ? &model_of(follow_new->id, index, cf) : nullptr;
+  if (follow_new != nullptr) s.new_follower_after_mps2 = follower_accel_mps2(*new_follower_cf, *follow_new, &self);
   if (!mobil_safe(v.driver.mobil, s.self_after_mps2, s.new_follower_after_mps2)) return opt;
   s.self_now_mps2 = accel_behind(v, cf, lead_now);
-  if (follow_new != nullptr) {
-    s.new_follower_now_mps2 =
-        follower_accel_mps2(model_of(follow_new->id, index, cf), *follow_new, lead_new);
-  }
+  if (follow_new != nullptr) s.new_follower_now_mps2 = follower_accel_mps2(*new_follower_cf, *follow_new, lead_new);
   if (follow_old != nullptr) {
-    s.old_follower_now_mps2 =
-        follower_accel_mps2(model_of(follow_old->id, index, cf), *follow_old, &self);
-    s.old_follower_after_mps2 =
-        follower_accel_mps2(model_of(follow_old->id, index, cf), *follow_old, lead_now);
+    const CarFollowingParams& old_follower_cf = model_of(follow_old->id, index, cf);
+    s.old_follower_now_mps2 = follower_accel_mps2(old_follower_cf, *follow_old, &self);
+    s.old_follower_after_mps2 = follower_accel_mps2(old_follower_cf, *follow_old, lead_now);
   }
   const MobilDecision d = mobil_decide(v.driver.mobil, s);
   opt.safe = d.safe;

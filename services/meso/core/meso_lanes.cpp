@@ -15,19 +15,16 @@ bool room_behind(const Vehicle& v, const Occupant& leader, double ahead_factor) 
 }
 
 // Room for `follower` behind `v`: the follower keeps its safe gap (at its speed, `v`'s time gap),
-// and closing in, it would not brake harder than MOBIL's safe deceleration behind `v` (judged as
-// micro's drivers judge it, model_of; `follower_cf` its own model where known, else
-// null). The safe gap alone let a car change in 50 m ahead of one 9 m/s faster, which braked at
-// 9 m/s^2 (freeway, seed 1, stop 33).
-bool room_ahead_of(const Vehicle& v, const Occupant& follower, const LaneIndex* index,
-                   const CarFollowingParams* follower_cf) {
+// and closing in, it would not brake harder than MOBIL's safe deceleration behind `v` by
+// `follower_model` (its own where meso drives it, as micro's drivers judge: model_of). The safe
+// gap alone let a car change in 50 m ahead of one 9 m/s faster, which braked at 9 m/s^2 (freeway,
+// seed 1, stop 33).
+bool room_ahead_of(const Vehicle& v, const Occupant& follower, const CarFollowingParams& follower_model) {
   const Occupant self = as_occupant(v);
   if (gap_between(self, follower.progress_m, follower.length_m) < safe_gap_m(v.driver.car_following.idm, follower.speed_mps)) {
     return false;
   }
-  const CarFollowingParams& model =
-      follower_cf != nullptr ? *follower_cf : model_of(follower.id, *index, v.driver.car_following);
-  return follower_accel_mps2(model, follower, &self) >= -v.driver.mobil.safe_decel_mps2;
+  return follower_accel_mps2(follower_model, follower, &self) >= -v.driver.mobil.safe_decel_mps2;
 }
 
 // Room for `v` in `lane`: the gap ahead is at least `ahead_factor` safe gaps and the follower
@@ -36,7 +33,8 @@ bool has_room(const Vehicle& v, const LaneIndex& index, int lane, double ahead_f
   const auto around = index.neighbours(v.direction, lane, v.progress_m(), v.id);
   *leader_out = around.leader;
   if (around.leader != nullptr && !room_behind(v, *around.leader, ahead_factor)) return false;
-  return around.follower == nullptr || room_ahead_of(v, *around.follower, &index, nullptr);
+  return around.follower == nullptr ||
+         room_ahead_of(v, *around.follower, model_of(around.follower->id, index, v.driver.car_following));
 }
 
 bool just_begun(const Vehicle& v, const LaneRules& rules) {
@@ -89,7 +87,7 @@ bool crowds_change(const Vehicle& v, const Vehicle& other, const LaneRules& rule
   const int to = v.lane_change.to_lane;
   if (other.lane != to && other.target_lane() != to) return false;
   const Occupant o = as_occupant(other);
-  return other.progress_m() >= v.progress_m() ? !room_behind(v, o, 1.0) : !room_ahead_of(v, o, nullptr, &other.driver.car_following);
+  return other.progress_m() >= v.progress_m() ? !room_behind(v, o, 1.0) : !room_ahead_of(v, o, other.driver.car_following);
 }
 
 }  // namespace entourage::meso
