@@ -147,7 +147,7 @@ std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, co
 // (clear_out, make_way, letting in), each from the situation of the moment, and they answered each
 // other: over 50 cut-in runs 6906 of 7237 requested lane changes were undone within 5 s, and a
 // driver in view signalled and then stayed, 38 times per vehicle-hour against the autonomous
-// drivers' 3 (services/director/README.md, stop 32). A vehicle asked for a lane
+// drivers' 3 (services/director/NOTES.md, stop 32). A vehicle asked for a lane
 // change keeps that request while it waits to move over, for kHoldLaneRequest_s, whatever another
 // rule asks of it meanwhile (its speed included), and for good once it moves.
 inline constexpr double kHoldLaneRequest_s = 20.0;
