@@ -101,6 +101,8 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
   ExtremesOverRuns actors, cleared, autonomous;
   int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
   bench::SignalsCalledOff off_commanded, off_autonomous;
+  bench::RightPasses right, right_undirected;
+  int runs_right = 0, runs_right_undirected = 0;  // runs in which the ego passed any on the right
   std::map<std::string, int> causes;
   std::map<std::string, int> missing_at_t2;  // runs in which each kind was missing at trigger point 2
   std::map<std::string, std::pair<int, int>> by_variant;  // ok, runs
@@ -133,6 +135,10 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
     if (r.traffic_slowed_to() > 0.0) slowed.push_back(r.traffic_slowed_to());
     o_beside.push_back(r.autonomous_beside_ego_s);
     off_commanded.add(r.called_off_commanded);
+    right.add(r.passed_on_right);
+    right_undirected.add(r.passed_on_right_undirected);
+    runs_right += r.passed_on_right.total() > 0 ? 1 : 0;
+    runs_right_undirected += r.passed_on_right_undirected.total() > 0 ? 1 : 0;
     off_autonomous.add(r.called_off_autonomous);
     created += r.created;
     in_view += r.created_in_view;
@@ -177,6 +183,10 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
               "  actors      %.1f / %.1f / %.1f s\n  autonomous  %.1f / %.1f / %.1f s\n",
               bench::kBesideEgo_m, percentile(a_beside, 0.5), percentile(a_beside, 0.95), percentile(a_beside, 1.0),
               percentile(o_beside, 0.5), percentile(o_beside, 0.95), percentile(o_beside, 1.0));
+  std::printf("vehicles the ego passed on the right, trigger point 1 to 2 (it in a lane right of theirs)\n"
+              "  with the director     %d (%d under its command) in %d runs\n"
+              "  without the director  %d in %d runs\n",
+              right.total(), right.commanded, runs_right, right_undirected.total(), runs_right_undirected);
   std::printf("lane changes called off (indicator on, then off in the same lane; inner region, while preparing)\n"
               "  commanded   %d in %.1f vehicle-hours (%.1f per vehicle-hour)\n"
               "  autonomous  %d in %.1f vehicle-hours (%.1f per vehicle-hour)\n",
@@ -254,15 +264,16 @@ int run(int argc, char** argv) {
         last.held_up_s = (last.trigger2_time_s - last.trigger1_time_s) - (undirected.trigger2_s - undirected.trigger1_s);
       }
       last.traffic_speed_undirected_mps = undirected.traffic_speed_mps;
+      last.passed_on_right_undirected = undirected.passed_on_right;
       variants.push_back(v);
       if (verbose) {
         const bench::PlayRunResult& r = results.back();
         std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s waited %4.1f s created %d "
-                    "overlaps %d/%d held up %4.1f s beside %4.1f s traffic %4.2f  %s\n",
+                    "overlaps %d/%d held up %4.1f s beside %4.1f s traffic %4.2f right %d/%d  %s\n",
                     i, static_cast<unsigned long long>(s), bench::to_string(v), director::to_string(r.final_phase),
                     r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s, r.handover_wait_s, r.created,
                     r.overlaps_with_actor, r.overlaps_other, r.held_up_s, r.actor_beside_ego_s, r.traffic_slowed_to(),
-                    r.failure.c_str());
+                    r.passed_on_right.total(), r.passed_on_right_undirected.total(), r.failure.c_str());
       }
     }
     print_play(loaded.config.plays.front().name + " (" + loaded.config.name + ")", results, variants);

@@ -115,6 +115,26 @@ ScenarioConfig vary_ego(ScenarioConfig sc, int index, std::uint64_t seed, EgoVar
   return sc;
 }
 
+void RightPassCounter::observe(const EgoObservation& ego, const std::vector<ObservedVehicle>& world, RightPasses& out,
+                               std::FILE* trace) {
+  std::map<VehicleId, double> ahead_now;
+  if (ego.lane == ego.target_lane) {
+    for (const ObservedVehicle& v : world) {
+      if (v.direction != ego.direction || v.lane != v.target_lane || v.lane <= ego.lane) continue;
+      const double ahead_m = v.progress_m() - ego.progress_m();
+      ahead_now.emplace(v.id, ahead_m);
+      const auto before = ahead_m_.find(v.id);
+      if (before == ahead_m_.end() || before->second <= 0.0 || ahead_m > 0.0) continue;
+      ++(v.control == ControlMode::kAutonomous ? out.autonomous : out.commanded);
+      if (trace != nullptr) {
+        std::fprintf(trace, "passed on the right t %.1f: %u (lane %d, %.1f m/s%s), the ego in lane %d at %.1f m/s\n",
+                     ego.time_s, v.id, v.lane, v.speed_mps, control_mark(v.control), ego.lane, ego.speed_mps);
+      }
+    }
+  }
+  ahead_m_ = std::move(ahead_now);
+}
+
 namespace {
 // Has the ego of `in` reached road position `s_m` (along its direction)?
 bool ego_passed(const StepInput& in, double s_m) { return in.ego.progress_m() >= sign(in.ego.direction) * s_m; }
@@ -127,12 +147,16 @@ TriggerTimes trigger_times_undirected(const ScenarioConfig& sc, std::uint64_t se
   undirected.plays.clear();
   WindowCores cores(undirected, seed);
   SpeedTally traffic;
+  RightPassCounter right_passes;
   for (Step k = 0; k <= undirected.steps() && !cores.at_road_end() && t.trigger2_s < 0.0; ++k) {
     StepInput in = cores.next_input();
     const StepOutputs out = cores.compute(in);
     if (t.trigger1_s < 0.0 && ego_passed(in, play.trigger1_s_m)) t.trigger1_s = in.ego.time_s;
     if (t.trigger2_s < 0.0 && ego_passed(in, play.trigger2_s_m)) t.trigger2_s = in.ego.time_s;
-    if (t.trigger1_s >= 0.0 && t.trigger2_s < 0.0) traffic.add(in, undirected);
+    if (t.trigger1_s >= 0.0 && t.trigger2_s < 0.0) {
+      traffic.add(in, undirected);
+      if (in.ego_prev) right_passes.observe(*in.ego_prev, in.world_prev, t.passed_on_right);
+    }
     cores.publish(in, out);
   }
   if (t.trigger2_s >= 0.0) t.traffic_speed_mps = traffic.mean_mps();
@@ -154,6 +178,7 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
   };
   std::map<VehicleId, SignalOn> signal_lane;  // vehicles signalling now
   SpeedTally around_ego;                         // trigger point 1 to 2
+  RightPassCounter right_passes;                 // the same
   double first_estimate_s = -1.0;
   bool seen_beyond_trigger2 = false;  // the first report once the ego passed trigger point 2
   const PlayConfig& play = sc.plays.front();
@@ -164,7 +189,10 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
     const WindowBounds w = WindowBounds::around(in.ego.s_m, sc.window);
     if (r.trigger1_time_s < 0.0 && ego_passed(in, play.trigger1_s_m)) r.trigger1_time_s = in.ego.time_s;
     if (r.trigger2_time_s < 0.0 && ego_passed(in, play.trigger2_s_m)) r.trigger2_time_s = in.ego.time_s;
-    if (r.trigger1_time_s >= 0.0 && r.trigger2_time_s < 0.0) around_ego.add(in, sc);
+    if (r.trigger1_time_s >= 0.0 && r.trigger2_time_s < 0.0) {
+      around_ego.add(in, sc);
+      if (in.ego_prev) right_passes.observe(*in.ego_prev, in.world_prev, r.passed_on_right, trace);
+    }
     if (r.trigger2_time_s >= 0.0 && r.traffic_speed_mps < 0.0) r.traffic_speed_mps = around_ego.mean_mps();
     for (const Handoff& h : out.director.births) {
       ++r.created;

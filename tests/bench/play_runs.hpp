@@ -55,6 +55,30 @@ struct SignalsCalledOff {
   double per_vehicle_hour() const { return vehicle_s > 0.0 ? 3600.0 * count / vehicle_s : 0.0; }
 };
 
+// The vehicles the ego passed on the right: it overtook them from a lane to the right of theirs,
+// neither changing lanes meanwhile (lanes count from the right). Freeway drivers keep right and
+// pass on the left; a driver who passes a column of cars in the passing lane on the right sees
+// traffic that does not behave like traffic (the slow column of cleared vehicles of stop 33).
+struct RightPasses {
+  int commanded = 0;   // under a director's command at the time
+  int autonomous = 0;
+  int total() const { return commanded + autonomous; }
+  void add(const RightPasses& o) {
+    commanded += o.commanded;
+    autonomous += o.autonomous;
+  }
+};
+class RightPassCounter {
+ public:
+  // One step: the ego and the world as published for the same step; each pass is printed to
+  // `trace` if not null.
+  void observe(const EgoObservation& ego, const std::vector<ObservedVehicle>& world, RightPasses& out,
+               std::FILE* trace = nullptr);
+
+ private:
+  std::map<VehicleId, double> ahead_m_;  // last step's lead over the ego of each vehicle left of it
+};
+
 struct PlayRunResult {
   director::PlayPhase final_phase = director::PlayPhase::kWaiting;
   bool handed_over = false;
@@ -87,6 +111,10 @@ struct PlayRunResult {
   // director's command, and an autonomous one. A driver notices a car that paces them.
   double actor_beside_ego_s = 0.0;
   double autonomous_beside_ego_s = 0.0;
+  // The vehicles the ego passed on the right from trigger point 1 to 2 (RightPasses), and in the
+  // same run without the director (filled by the caller).
+  RightPasses passed_on_right;
+  RightPasses passed_on_right_undirected;
   // The mean speed of the ego's direction's vehicles in the inner region while the ego drove from
   // trigger point 1 to 2 (< 0: it did not): against the same run without the director, how much
   // the director slowed the traffic around the driver.
@@ -124,6 +152,7 @@ struct TriggerTimes {
   double trigger1_s = -1.0;
   double trigger2_s = -1.0;
   double traffic_speed_mps = -1.0;  // as PlayRunResult's
+  RightPasses passed_on_right;      // trigger point 1 to 2
 };
 TriggerTimes trigger_times_undirected(const ScenarioConfig& sc, std::uint64_t seed);
 
