@@ -52,7 +52,8 @@ MesoCore::MesoCore(const ScenarioConfig& scenario, ServiceId self)
       index_(scenario.road.lanes_forward, scenario.road.lanes_backward),
       model_(model_params_for(scenario)),
       steps_per_plan_(std::max(1, static_cast<int>(std::lround(model_.update_period_s / scenario.step_s)))),
-      env_(scenario) {}
+      env_(scenario),
+      unseen_(unseen_oncoming(scenario)) {}
 
 bool MesoCore::serves(Region r) const {
   return (r == Region::kOuterRear && serves_rear_) || (r == Region::kOuterFront && serves_front_);
@@ -150,6 +151,7 @@ void MesoCore::confirm_changes() {
 
 void MesoCore::perceive(const StepInput& in) {
   build_index(index_, fleet_, in.world_prev, ego_seen(in, scenario_.ego.transparent));
+  add_unseen_oncoming(index_, unseen_, WindowBounds::around(in.ego.s_m, scenario_.window).front_edge_m);
 }
 
 Ahead MesoCore::ahead_of(const Vehicle& v, bool own_lane_only) const {

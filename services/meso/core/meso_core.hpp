@@ -31,6 +31,7 @@
 #include "traffic/handoff.hpp"
 #include "traffic/lane_index.hpp"
 #include "traffic/step_io.hpp"
+#include "traffic/unseen_oncoming.hpp"
 
 namespace entourage::meso {
 
@@ -116,6 +117,7 @@ class MesoCore {
   std::vector<std::size_t> overtakers_;  // fleet positions driven by micro's model at this step, ascending
   std::vector<VehicleId> alert_;         // planned at every step (plan), in id order
   DrivingEnvironment env_;
+  UnseenOncoming unseen_;  // the oncoming traffic beyond the window's front edge (traffic/unseen_oncoming.hpp)
   std::unordered_map<VehicleId, EquilibriumSpeed> equilibrium_;  // per owned vehicle's driver
   Counters counters_;
 };

@@ -8,7 +8,8 @@ MicroCore::MicroCore(const ScenarioConfig& scenario, ServiceId self)
       road_(scenario.road),
       env_(scenario),
       inbox_(Role::kMicro, {Region::kInner}),
-      index_(scenario.road.lanes_forward, scenario.road.lanes_backward) {}
+      index_(scenario.road.lanes_forward, scenario.road.lanes_backward),
+      unseen_(unseen_oncoming(scenario)) {}
 
 StepOutput MicroCore::step(const StepInput& in) {
   adopt(in);
@@ -26,6 +27,7 @@ void MicroCore::adopt(const StepInput& in) {
 
 void MicroCore::perceive(const StepInput& in) {
   build_index(index_, fleet_, in.world_prev, ego_seen(in, scenario_.ego.transparent));
+  add_unseen_oncoming(index_, unseen_, WindowBounds::around(in.ego.s_m, scenario_.window).front_edge_m);
 }
 
 std::vector<Decision> MicroCore::decide() const {

@@ -23,6 +23,7 @@
 #include "traffic/handoff.hpp"
 #include "traffic/lane_index.hpp"
 #include "traffic/step_io.hpp"
+#include "traffic/unseen_oncoming.hpp"
 
 namespace entourage::micro {
 
@@ -62,6 +63,7 @@ class MicroCore {
   HandoffInbox inbox_;
   Fleet fleet_;
   LaneIndex index_;
+  UnseenOncoming unseen_;  // the oncoming traffic beyond the window's front edge (traffic/unseen_oncoming.hpp)
   Counters counters_;
 };
 
