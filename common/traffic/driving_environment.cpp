@@ -8,8 +8,7 @@ DrivingEnvironment::DrivingEnvironment(const ScenarioConfig& scenario, DrivingRu
       ahead_(scenario.road),
       overtaking_(scenario.overtaking),
       dt_s_(scenario.step_s),
-      two_way_(scenario.road.kind == RoadKind::kRural && scenario.road.lanes_backward > 0 &&
-               scenario.road.lanes_forward > 0),
+      two_way_(two_way_road(scenario.road)),
       lanes_forward_(scenario.road.lanes_forward),
       lanes_backward_(scenario.road.lanes_backward) {}
 

@@ -11,6 +11,12 @@
 
 namespace entourage {
 
+// Oncoming traffic shares the road (a rural road with lanes both ways, no barrier): overtakings
+// use the oncoming lane.
+inline bool two_way_road(const RoadConfig& road) {
+  return road.kind == RoadKind::kRural && road.lanes_backward > 0 && road.lanes_forward > 0;
+}
+
 // Timing of lane changes (thesis ch. 3.2: lane changes must take time to look real) and the
 // thresholds of the situations that override the models.
 struct DrivingRules {

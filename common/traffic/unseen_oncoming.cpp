@@ -1,5 +1,6 @@
 #include "traffic/unseen_oncoming.hpp"
 
+#include "traffic/driving_environment.hpp"
 #include "traffic/world.hpp"
 
 namespace entourage {
@@ -8,10 +9,7 @@ UnseenOncoming unseen_oncoming(const ScenarioConfig& scenario) {
   UnseenOncoming u;
   const RoadConfig& road = scenario.road;
   const double flow_per_s = scenario.backward.flow_veh_per_s;
-  if (road.kind != RoadKind::kRural || road.lanes_forward <= 0 || road.lanes_backward <= 0 || !(flow_per_s > 0.0) ||
-      !(road.speed_limit_mps > 0.0)) {
-    return u;
-  }
+  if (!two_way_road(road) || !(flow_per_s > 0.0) || !(road.speed_limit_mps > 0.0)) return u;
   u.present = true;
   u.lanes = road.lanes_backward;
   u.speed_mps = road.speed_limit_mps;
