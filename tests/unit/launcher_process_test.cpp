@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include <unistd.h>
+
 #include "launcher/process.hpp"
 
 namespace entourage::launcher {
@@ -14,8 +16,12 @@ namespace {
 constexpr std::size_t kTail = 15;  // as many log lines as the launcher reads
 constexpr double kWait_s = 10.0;
 
+// Per process: ctest runs each test of this file as its own process, in parallel, and one test's
+// TearDown removed the log another was still reading (seen once in a full ctest run, and again
+// within 20 repeats of this file's tests).
 std::string log_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("entourage_process_test_" + name + ".log")).string();
+  const std::string file = "entourage_process_test_" + std::to_string(::getpid()) + "_" + name + ".log";
+  return (std::filesystem::temp_directory_path() / file).string();
 }
 
 // Runs `script` with sh as a child of this process ($0 in it is `text`) and waits for it to end.
