@@ -76,6 +76,18 @@ TEST(Transport, AnActorNearerAheadOfTheEgoThanItsStartNeverDrivesSlowerThanItsSt
   EXPECT_NEAR(ego_pace_floor_mps(39.0, 40.0, 0.0, -5.0), 0.1, 1e-12);
 }
 
+TEST(Transport, AnActorWithAnAbsoluteStartSpeedWithinItsToleranceOfItsStartNeverDrivesSlowerThanThatSpeed) {
+  // A truck to start 45 m ahead at 16.7 m/s (tolerance 15 m): 55 m ahead it is there already and
+  // keeps its start speed whatever the ego does; nearer, it opens the gap as a relative role does.
+  EXPECT_DOUBLE_EQ(start_speed_floor_mps(55.0, 45.0, 15.0, 16.7), 16.7);
+  EXPECT_DOUBLE_EQ(start_speed_floor_mps(60.0, 45.0, 15.0, 16.7), 16.7);
+  EXPECT_DOUBLE_EQ(start_speed_floor_mps(35.0, 45.0, 15.0, 16.7), 17.7);
+  EXPECT_DOUBLE_EQ(start_speed_floor_mps(5.0, 45.0, 15.0, 16.7), 16.7 + kOpenToStartMax_mps);
+  // Further than its tolerance (the plan brings it back) or not ahead of the ego: no floor.
+  EXPECT_LT(start_speed_floor_mps(61.0, 45.0, 15.0, 16.7), 0.0);
+  EXPECT_LT(start_speed_floor_mps(-3.0, 45.0, 15.0, 16.7), 0.0);
+}
+
 TEST(Transport, AVehicleThatWouldStandInAClearZoneIsSentToTheNextLaneOrOutOfTheZone) {
   PlayConfig play = lead_play();
   play.clear = {{0, 5.0, 40.0}};

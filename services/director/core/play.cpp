@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "director/core/casting.hpp"
@@ -146,7 +147,7 @@ PlayOutput PlayRun::step(const PlayInput& in) {
   if (phase_ == PlayPhase::kWaiting && x >= dir * play_.trigger1_s_m && x < dir * play_.trigger2_s_m) {
     // Preparing starts with the first estimate; casting at the next step.
     phase_ = PlayPhase::kPreparing;
-    const Prediction pred = estimator_.predict(dir * (play_.trigger2_s_m - in.ego.s_m));
+    const Prediction pred = estimator_.predict(dir * (play_.trigger2_s_m - in.ego.s_m), ego_leader(in));
     estimated_start_s_ = pred.time_s < 0.0 ? -1.0 : in.ego.time_s + pred.time_s;
     report(in, out, "trigger point 1 passed");
     first_report_ = false;
@@ -202,11 +203,34 @@ PlayOutput PlayRun::step(const PlayInput& in) {
   return out;
 }
 
+std::optional<LeaderAhead> PlayRun::ego_leader(const PlayInput& in) const {
+  const ObservedVehicle* v = unpassable_leader(in.ego, in.world, setting_.lanes);
+  if (v == nullptr) return std::nullopt;
+  // An actor of this play ahead in the ego's lane goes to its start speed, and so does the queue
+  // behind it: the leader is expected at that, not at the pace the actor's way there takes now.
+  // (At its present speed, a truck slowed to lose ground on the ego made the ego expected ever
+  // slower, the start later and the truck slower still: 35 km/h, and the ego passed it; and where
+  // a car had cut in between them, both crawled at 9 m/s.)
+  const int dir = sign(in.ego.direction);
+  double nearest_p = std::numeric_limits<double>::infinity();
+  double speed = v->speed_mps;
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
+    const PlayRoleConfig& rc = play_.roles[r];
+    const ObservedVehicle* a = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    if (a == nullptr || rc.direction != Direction::kForward || !occupies(*a, in.ego.direction, in.ego.lane)) continue;
+    const double p = dir * a->s_m;
+    if (p < dir * v->s_m || p >= nearest_p) continue;
+    nearest_p = p;
+    speed = std::max(0.0, rc.absolute_speed ? rc.speed_mps : in.ego.speed_mps + rc.speed_mps);
+  }
+  return leader_ahead(in.ego, *v, speed);
+}
+
 void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
   const double distance = sign(in.ego.direction) * (play_.trigger2_s_m - in.ego.s_m);
   Prediction pred{0.0, in.ego.speed_mps};  // beyond trigger point 2: the start is now
   if (distance > 0.0) {
-    pred = estimator_.predict(distance);
+    pred = estimator_.predict(distance, ego_leader(in));
     if (pred.time_s < 0.0) {  // the ego stands: nothing can be timed, actors hold what they have
       estimated_start_s_ = -1.0;
       return;
@@ -326,11 +350,13 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
     TransportCommand t = transport(way.slot, *v, way.time_s, role.command_mps, in.dt_s, in.world, in.ego,
                                    setting_.lanes, setting_.director, rate, type_accel);
     const PlayRoleConfig& rc = staged_.roles[r];
-    const bool in_ego_lane = rc.direction == in.ego.direction && !rc.absolute_speed &&
-                             slots[r].lane == staged_lane(in) && v->lane == slots[r].lane && v->target_lane == v->lane;
+    const bool in_ego_lane = rc.direction == in.ego.direction && slots[r].lane == staged_lane(in) &&
+                             v->lane == slots[r].lane && v->target_lane == v->lane;
     if (in_ego_lane) {
-      const double pace_mps = ego_pace_floor_mps(sign(in.ego.direction) * (v->s_m - in.ego.s_m), rc.ahead_m,
-                                                 in.ego.speed_mps, rc.speed_mps);
+      const double ahead = sign(in.ego.direction) * (v->s_m - in.ego.s_m);
+      const double pace_mps = rc.absolute_speed
+                                  ? start_speed_floor_mps(ahead, rc.ahead_m, rc.position_tolerance_m, rc.speed_mps)
+                                  : ego_pace_floor_mps(ahead, rc.ahead_m, in.ego.speed_mps, rc.speed_mps);
       if (pace_mps > t.speed_mps) {
         t.speed_mps = pace_mps;
         t.drive_mps = drive_speed_mps(pace_mps, v->speed_mps, rate, type_accel);

@@ -120,6 +120,9 @@ class PlayRun {
   };
 
   void prepare(const PlayInput& in, PlayOutput& out);
+  // The ego's leader for the start-time estimate where it cannot get past it (stage.hpp,
+  // unpassable_leader), at the speed it is expected to keep.
+  std::optional<LeaderAhead> ego_leader(const PlayInput& in) const;
   // Casts the roles without an actor; returns what it did ("" for nothing).
   std::string cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
                    PlayOutput& out);

@@ -138,6 +138,23 @@ SpeedPlan plan_speed(double v0_mps, double v_final_mps, double time_s, double di
   return plan;
 }
 
+const ObservedVehicle* unpassable_leader(const EgoObservation& ego, const std::vector<ObservedVehicle>& world,
+                                         const Lanes& lanes) {
+  if (lanes.of(ego.direction) != 1 || ego.lane != 0 || ego.target_lane != 0) return nullptr;
+  const int dir = sign(ego.direction);
+  const ObservedVehicle* nearest = nullptr;
+  for (const ObservedVehicle& v : world) {
+    if (!occupies(v, ego.direction, 0) || dir * (v.s_m - ego.s_m) <= 0.0) continue;
+    if (nearest == nullptr || dir * v.s_m < dir * nearest->s_m) nearest = &v;
+  }
+  return nearest;
+}
+
+LeaderAhead leader_ahead(const EgoObservation& ego, const ObservedVehicle& leader, double speed_mps) {
+  const double gap = sign(ego.direction) * (leader.s_m - ego.s_m) - 0.5 * (leader.length_m + ego.length_m);
+  return LeaderAhead{std::max(gap, 0.0), speed_mps};
+}
+
 bool occupies(const ObservedVehicle& v, Direction dir, int lane) {
   return v.direction == dir && (v.lane == lane || v.target_lane == lane);
 }

@@ -5,6 +5,9 @@
 
 #include <vector>
 
+#include <optional>
+
+#include "director/core/start_time.hpp"
 #include "road/window.hpp"
 #include "scenario/config.hpp"
 #include "traffic/world.hpp"
@@ -134,6 +137,16 @@ struct Between {
 };
 Between between(const Slot& slot, VehicleId self, double s_m, double time_s, const std::vector<ObservedVehicle>& world,
                 const EgoObservation& ego, double ego_s_at_handover_m);
+
+// The vehicle the ego follows where it cannot get past it by a lane of its own direction (one
+// lane per direction: a pass in the oncoming lane is the driver's exception), for the start-time
+// estimate (start_time.hpp): the nearest vehicle ahead in the ego's lane. None (nullptr) on roads
+// with more lanes in the ego's direction, while the ego is out of its direction's lanes
+// (overtaking), or with nobody ahead.
+const ObservedVehicle* unpassable_leader(const EgoObservation& ego, const std::vector<ObservedVehicle>& world,
+                                         const Lanes& lanes);
+// `leader` as the estimate sees it: the gap bumper to bumper, at `speed_mps`.
+LeaderAhead leader_ahead(const EgoObservation& ego, const ObservedVehicle& leader, double speed_mps);
 
 // Does `v` (or the ego) occupy `lane` of direction `dir` (its lane or, while changing, its target
 // lane)?

@@ -52,4 +52,36 @@ Prediction StartTimeEstimator::predict(double distance_m) const {
   return {hi, speed_after(hi)};
 }
 
+Prediction StartTimeEstimator::predict_behind(double distance_m, const LeaderAhead& leader) const {
+  const double h = p_.follow_step_s;
+  double t = 0.0;
+  double x = 0.0;
+  double v = speed_mps_;
+  IdmParams q = p_.follower;
+  while (t < p_.horizon_s) {
+    q.desired_speed_mps = std::max({speed_after(t), speed_mps_, p_.floor_speed_mps});
+    const double gap = leader.gap_m + leader.speed_mps * t - x;
+    const double a = idm_accel_mps2(q, v, std::max(gap, q.min_gap_m * 0.1), leader.speed_mps);
+    const double v_next = std::max(0.0, v + a * h);
+    const double dx = 0.5 * (v + v_next) * h;
+    if (x + dx >= distance_m) {
+      const double share = dx > 0.0 ? (distance_m - x) / dx : 1.0;
+      return {t + share * h, v + share * (v_next - v)};
+    }
+    if (v_next <= 0.0 && leader.speed_mps <= 0.0) return {};  // stands behind a standing leader
+    x += dx;
+    v = v_next;
+    t += h;
+  }
+  return {};
+}
+
+Prediction StartTimeEstimator::predict(double distance_m, const std::optional<LeaderAhead>& leader) const {
+  const Prediction free = predict(distance_m);
+  if (!leader || distance_m <= 0.0 || free.time_s < 0.0) return free;
+  const Prediction behind = predict_behind(distance_m, *leader);
+  if (behind.time_s < 0.0) return behind;
+  return behind.time_s > free.time_s ? behind : free;
+}
+
 }  // namespace entourage::director

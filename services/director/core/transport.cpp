@@ -90,6 +90,13 @@ double ego_pace_floor_mps(double ahead_of_ego_m, double start_ahead_m, double eg
   return std::max(0.0, ego_speed_mps + start_offset_mps) + open_mps;
 }
 
+double start_speed_floor_mps(double ahead_of_ego_m, double start_ahead_m, double tolerance_m, double start_speed_mps) {
+  if (ahead_of_ego_m <= 0.0 || ahead_of_ego_m > start_ahead_m + tolerance_m) return -1.0;
+  const double open_mps =
+      ahead_of_ego_m < start_ahead_m ? std::min((start_ahead_m - ahead_of_ego_m) / kOpenToStart_s, kOpenToStartMax_mps) : 0.0;
+  return std::max(0.0, start_speed_mps) + open_mps;
+}
+
 TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, double time_left_s, double previous_cmd_mps,
                            double dt_s, const std::vector<ObservedVehicle>& world, const EgoObservation& ego,
                            const Lanes& lanes, const DirectorConfig& cfg, double rate_mps2, double type_accel_mps2) {

@@ -59,6 +59,12 @@ double drive_speed_mps(double speed_mps, double actor_speed_mps, double rate_mps
 inline constexpr double kOpenToStart_s = 10.0;
 inline constexpr double kOpenToStartMax_mps = 2.0;
 double ego_pace_floor_mps(double ahead_of_ego_m, double start_ahead_m, double ego_speed_mps, double start_offset_mps);
+// The same for a role with an absolute start speed (a slow truck at 60 km/h): within its position
+// tolerance of its start relative to the ego, or nearer, it drives at least at its start speed
+// (opening the gap as above when nearer). Paced by the plan instead, the ego behind it held up by
+// it moved the estimated start later and the plan slower with it (traced, slow truck seed 60,
+// stop 35: the truck, a car that had cut in and the ego from 20 to 8.6 m/s in 60 s).
+double start_speed_floor_mps(double ahead_of_ego_m, double start_ahead_m, double tolerance_m, double start_speed_mps);
 
 // `previous_cmd_mps`: the speed of the previous step's command (< 0: none yet).
 // `rate_mps2`: the planning rate (transport_rate_mps2 for the actor's type); `type_accel_mps2`:
