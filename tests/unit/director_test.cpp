@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 
 #include "core_test_util.hpp"
@@ -457,6 +458,46 @@ TEST(Clearing, AVehicleWaitingToLeaveAZoneIsLetInByTheOneJustBehindItInTheTarget
   ASSERT_NE(after, nullptr);
   EXPECT_EQ(after->speed_mps, kOwnDesiredSpeed_mps);
   EXPECT_EQ(after->lane, 1);
+}
+
+// On one lane per direction a vehicle that passes the ego during the preparation is caught between
+// it and an actor ahead of it: the vehicles behind the ego in its lane, within the inner region,
+// keep their lane (pass nobody) while a zone lies ahead of the ego; not on a road with a second
+// lane in the ego's direction, nor vehicles further back or in the oncoming lane.
+TEST(Clearing, OnOneLanePerDirectionTheEgosFollowersKeepTheirLaneWhileAZoneLiesAheadOfIt) {
+  auto commands_after_preparing = [](int lanes_forward) {
+    ScenarioConfig sc = testing::minimal_scenario();
+    sc.road.lanes_forward = lanes_forward;
+    sc.road.lanes_backward = 1;
+    sc.road.kind = RoadKind::kRural;
+    PlayConfig play = lead_play();
+    play.clear = {{0, 3.0, 37.0}};
+    sc.plays = {play};
+    DirectorCore core(sc, 1);
+    const double inner_behind = sc.window.inner_behind_m;
+    std::map<VehicleId, ActorControl> sent;
+    for (Step k = 0; k < 3; ++k) {  // trigger point 1; cast; transporting and clearing
+      StepInput in;
+      in.step = k;
+      in.ego = testing::ego_at(k, 2000.0 + 2.5 * static_cast<double>(k), 25.0);
+      in.world_prev = {vehicle(7, 2300.0, 25.0), vehicle(8, in.ego.s_m - 30.0, 26.0),
+                       vehicle(9, in.ego.s_m - inner_behind - 20.0, 27.0),
+                       vehicle(10, in.ego.s_m - 60.0, 22.0, 0, Direction::kBackward)};
+      for (const ActorCommand& c : core.step(in).commands) sent[c.vehicle] = c.control;
+    }
+    return sent;
+  };
+  const auto rural = commands_after_preparing(1);
+  ASSERT_EQ(rural.count(8), 1u);
+  EXPECT_EQ(rural.at(8).mode, ControlMode::kTransported);
+  EXPECT_EQ(rural.at(8).lane, 0);
+  EXPECT_EQ(rural.at(8).speed_mps, kOwnDesiredSpeed_mps);
+  EXPECT_EQ(rural.count(9), 0u);   // beyond the inner region
+  EXPECT_EQ(rural.count(10), 0u);  // oncoming
+  // With a second lane it is not held in the ego's (here, faster than the ego and heading for the
+  // zone ahead of it, it is sent to the other lane instead).
+  const auto freeway = commands_after_preparing(2);
+  EXPECT_TRUE(freeway.count(8) == 0 || freeway.at(8).lane != 0);
 }
 
 }  // namespace

@@ -133,6 +133,14 @@ class PlayRun {
   // Vehicles waiting to change into a lane they were asked for are let in (transport.hpp,
   // follower_to_let_in); a vehicle that let one in drives on at its own speed in its lane.
   void let_in(const PlayInput& in, PlayOutput& out);
+  // On one lane per direction, with a clear zone ahead of the ego in its lane: the vehicles behind
+  // the ego in its lane, within the inner region, keep their lane (pass nobody) until the
+  // handover. Nothing gets out from between the ego and an actor ahead of it there (casting.hpp,
+  // stuck_between), and a follower that passed the ego during the preparation was caught there
+  // by the oncoming traffic: 6 of the 13 failed slow truck runs with a truck cast at stop 35 (the
+  // car 13-37 m ahead of the ego in the truck's clear zone at the start; seeds 17, 26, 60, 64, 77,
+  // 94).
+  void hold_followers(const PlayInput& in, PlayOutput& out);
   // Whether a vehicle this play holds keeps the lane change it was asked for instead of `lane`
   // (transport.hpp, keeps_lane_request).
   bool holds_lane_request(const ObservedVehicle& v, int lane, double now_s) const;

@@ -94,6 +94,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
     }
   }
   let_in(in, out);
+  hold_followers(in, out);
   if (time_to_start_s > kHoldLanesBefore_s) return;
   // Shortly before the start, vehicles beside a zone keep their lane (at their own speed), so that
   // none changes into it at the last moment.
@@ -110,6 +111,27 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
     cleared_.push_back(v.id);
     in.available[i] = false;
     command(v.id, transported(kOwnDesiredSpeed_mps, v.lane), in.step, out);
+  }
+}
+
+void PlayRun::hold_followers(const PlayInput& in, PlayOutput& out) {
+  const int lane = staged_lane(in);
+  if (setting_.lanes.of(in.ego.direction) != 1 || in.ego.lane != lane || in.ego.target_lane != lane) return;
+  const bool zone_ahead = std::any_of(staged_.clear.begin(), staged_.clear.end(), [](const PlayClearZoneConfig& z) {
+    return z.lane_offset == 0 && z.to_m > 0.0;
+  });
+  if (!zone_ahead) return;
+  const int dir = sign(in.ego.direction);
+  for (std::size_t i = 0; i < in.world.size(); ++i) {
+    const ObservedVehicle& v = in.world[i];
+    const double behind_m = dir * (in.ego.s_m - v.s_m);
+    if (!in.available[i] || is_cleared(v.id) || v.direction != in.ego.direction || v.lane != lane ||
+        v.target_lane != lane || behind_m <= 0.0 || behind_m > setting_.window.inner_behind_m) {
+      continue;
+    }
+    cleared_.push_back(v.id);
+    in.available[i] = false;
+    command(v.id, transported(kOwnDesiredSpeed_mps, lane), in.step, out);
   }
 }
 
