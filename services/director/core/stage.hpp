@@ -3,9 +3,8 @@
 // Positions are road s; "travel" coordinates are progress along a vehicle's own direction
 // (sign(direction) * s), so ahead is larger for both directions.
 
-#include <vector>
-
 #include <optional>
+#include <vector>
 
 #include "director/core/start_time.hpp"
 #include "road/window.hpp"

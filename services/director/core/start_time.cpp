@@ -8,6 +8,9 @@ namespace entourage::director {
 namespace {
 constexpr int kBisectionSteps = 60;
 constexpr int kIntegrationSteps = 200;  // of the distance integral when the speed floor is reached
+// The gap the drive behind a leader divides by never falls below this (the IDM's interaction term
+// grows as 1/gap^2: the integration step would otherwise overshoot through a leader it reaches).
+constexpr double kFollowGapFloor_m = 0.2;
 }  // namespace
 
 void StartTimeEstimator::observe(double speed_mps, double accel_mps2, double dt_s) {
@@ -61,7 +64,7 @@ Prediction StartTimeEstimator::predict_behind(double distance_m, const LeaderAhe
   while (t < p_.horizon_s) {
     q.desired_speed_mps = std::max({speed_after(t), speed_mps_, p_.floor_speed_mps});
     const double gap = leader.gap_m + leader.speed_mps * t - x;
-    const double a = idm_accel_mps2(q, v, std::max(gap, q.min_gap_m * 0.1), leader.speed_mps);
+    const double a = idm_accel_mps2(q, v, std::max(gap, kFollowGapFloor_m), leader.speed_mps);
     const double v_next = std::max(0.0, v + a * h);
     const double dx = 0.5 * (v + v_next) * h;
     if (x + dx >= distance_m) {

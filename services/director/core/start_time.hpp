@@ -17,9 +17,10 @@
 // the truck at 9 m/s slowed from 24.6 to 19 m/s in the last 18 s, the start came 1.4 s after the
 // estimate, and the truck, which cannot change its speed fast, stood 16-24 m beyond its start in 9
 // of 50 runs. With a leader the ego is also driven forward as an IDM driver behind it (the leader
-// at its present speed; the driver's desired speed the extrapolation's, never below its present
-// speed; the reference parameters of Treiber et al. 2000, Table I), and the later of the two
-// arrivals is the estimate.
+// at the speed the caller expects of it, constant: its present one, or an actor's start speed,
+// play.cpp; the driver's desired speed the extrapolation's, never below its present speed; the
+// reference parameters of Treiber et al. 2000, Table I), and the later of the two arrivals is the
+// estimate.
 
 #include <cstdint>
 #include <optional>
@@ -34,6 +35,7 @@ struct StartTimeParams {
   double floor_speed_mps = 1.0;   // the ego is expected to keep moving at least this fast
   double horizon_s = 3600.0;      // beyond this the estimate is "unknown"
   // How the ego is expected to close in on a slower leader (its desired speed is set per step).
+  // Treiber et al. 2000, Table I: v0 (replaced), T 1.6 s, a 0.73 m/s^2, b 1.67 m/s^2, s0 2 m, delta 4.
   IdmParams follower{33.3, 1.6, 0.73, 1.67, 2.0, 4.0};
   double follow_step_s = 0.25;    // integration step of the drive behind the leader
 };
