@@ -221,7 +221,7 @@ std::optional<LeaderAhead> PlayRun::ego_leader(const PlayInput& in) const {
     const double p = dir * a->s_m;
     if (p < dir * v->s_m || p >= nearest_p) continue;
     nearest_p = p;
-    speed = std::max(0.0, rc.absolute_speed ? rc.speed_mps : in.ego.speed_mps + rc.speed_mps);
+    speed = start_speed_mps(rc, in.ego.speed_mps);
   }
   return leader_ahead(in.ego, *v, speed);
 }
@@ -390,7 +390,7 @@ std::string PlayRun::start_problems(const PlayInput& in) {
       continue;
     }
     const double ahead = dir * (v->s_m - in.ego.s_m);
-    const double speed = std::max(0.0, rc.absolute_speed ? rc.speed_mps : in.ego.speed_mps + rc.speed_mps);
+    const double speed = start_speed_mps(rc, in.ego.speed_mps);
     role.position_error_m = ahead - rc.ahead_m;
     role.speed_error_mps = v->speed_mps - speed;
     // The lane the ego is in or moving to, as the slots were planned.

@@ -51,6 +51,10 @@ Aim aim_of(double time_to_start_s, double trigger2_s_m, double speed_at_start_mp
   return {horizon_s, ego.s_m + sign(ego.direction) * v * horizon_s, v, horizon_s - std::max(time_to_start_s, 0.0)};
 }
 
+double start_speed_mps(const PlayRoleConfig& role, double ego_speed_mps) {
+  return std::max(0.0, role.absolute_speed ? role.speed_mps : ego_speed_mps + role.speed_mps);
+}
+
 std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int ego_lane, const Aim& aim,
                            const Lanes& lanes) {
   std::vector<Slot> out;
@@ -60,7 +64,7 @@ std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int 
     s.direction = r.direction == Direction::kForward ? ego_direction : Direction{static_cast<std::int8_t>(-sign(ego_direction))};
     const int lane = r.direction == Direction::kForward ? ego_lane + r.lane_offset : r.lane_offset;
     s.lane = std::clamp(lane, 0, std::max(0, lanes.of(s.direction) - 1));
-    s.speed_mps = std::max(0.0, r.absolute_speed ? r.speed_mps : aim.ego_speed_mps + r.speed_mps);
+    s.speed_mps = start_speed_mps(r, aim.ego_speed_mps);
     // Along the ego's direction: an oncoming role's start speed takes it the other way.
     const double relative_mps = sign(s.direction) * sign(ego_direction) * s.speed_mps - aim.ego_speed_mps;
     s.s_m = aim.ego_s_m + sign(ego_direction) * (r.ahead_m + relative_mps * aim.past_start_s);

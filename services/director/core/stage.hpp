@@ -64,6 +64,10 @@ struct Aim {
 Aim aim_of(double time_to_start_s, double trigger2_s_m, double speed_at_start_mps, const EgoObservation& ego,
            double horizon_s);
 
+// A role's start speed with the ego at `ego_speed_mps`: its own (absolute), or the ego's plus its
+// offset, never below standing.
+double start_speed_mps(const PlayRoleConfig& role, double ego_speed_mps);
+
 // The slots of `play`'s roles at `aim`, the ego in `ego_lane`. A role stands `ahead_m` from the
 // ego at the start and drives on at its start speed: at a time past the start it is that much
 // further ahead or behind. Forward means the ego's direction.
