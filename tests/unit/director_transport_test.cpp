@@ -201,11 +201,11 @@ struct EgoInTheRightLaneOfTwo : ::testing::Test {
 };
 
 TEST_F(EgoInTheRightLaneOfTwo, AClearedVehicleAheadOfTheEgoThatCannotMakeItInTimeDrivesAtTheTopOfTheBand) {
-  // Both lanes zones from 5 to 60 m ahead at the start, 10 s from now; vehicle 1 ends 20 m ahead
-  // of the ego, in the ego's lane: it must be 47 m further ahead, 9.4 m/s faster over the 5 s
-  // planned: beyond the 8 m/s band.
-  const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 2255.0, 2310.0},
-                                       {Direction::kForward, 1, 2255.0, 2310.0}};
+  // Both lanes zones from 5 to 120 m ahead at the start, 10 s from now; vehicle 1 ends 20 m ahead
+  // of the ego, in the ego's lane: it must be 107 m further ahead, 21.5 m/s faster over the 5 s
+  // planned and 10.7 m/s even by the start: beyond the 8 m/s band in either lane.
+  const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 2255.0, 2370.0},
+                                       {Direction::kForward, 1, 2255.0, 2370.0}};
   const std::vector<int> no_roles;
   const ObservedVehicle v = vehicle(1, 2020.0, 25.0);
   const auto top = clear_out(v, ClearingSituation{zones, 10.0, ego, 2250.0, no_roles, lanes, cfg});
@@ -240,6 +240,22 @@ TEST_F(EgoInTheRightLaneOfTwo, TheEgosLeaderInAZoneMovesAheadInTheActorsLaneOnly
     ASSERT_TRUE(stays.has_value());
     EXPECT_EQ(stays->lane, 0);
   }
+}
+
+TEST_F(EgoInTheRightLaneOfTwo, LateOnTheEgosLeaderMovesAheadInTheNextLaneByTheStartWhenItCannotBeThereEarly) {
+  // 10 s before a cut-in (ego then at 2250 m): the ego's lane a zone from 3 to 60 m ahead, the
+  // cutter's room in the left lane from 2258 to 2296 m. The ego's leader, 30 m ahead of it at its
+  // speed, would stand in the zone. Ahead of the room 5 s early it would need 54.7 m/s; by the start
+  // 27.3 m/s, within the band: it moves over and speeds up to that. (Kept in the ego's lane at the
+  // top of the band behind the ego's own leaders, a car stood in the zone at the start: cut-in, seed 58.)
+  const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 2253.0, 2310.0},
+                                       {Direction::kForward, 1, 2258.0, 2296.0}};
+  const std::vector<int> role_lanes{1};
+  const ObservedVehicle leader = vehicle(1, 2030.0, 25.0, 0);
+  const auto moved = clear_out(leader, ClearingSituation{zones, 10.0, ego, 2250.0, role_lanes, lanes, cfg});
+  ASSERT_TRUE(moved.has_value());
+  EXPECT_EQ(moved->lane, 1);
+  EXPECT_NEAR(leader.s_m + moved->speed_mps * 10.0, 2296.0 + 2.25 + 5.0, 1e-9);
 }
 
 TEST_F(EgoInTheRightLaneOfTwo, AVehicleInAnActorsLaneIsClearedOnlyOnItsOwnSideOfTheActor) {

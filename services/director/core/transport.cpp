@@ -185,9 +185,10 @@ ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>&
 
 namespace {
 // A neighbouring lane of `v`'s in which it can be ahead of every zone of that lane by the start
-// (clearing_time_s early) at a speed within [low, high], out of its actors' way (transport.hpp,
-// ActorPlace); the one that needs the smaller change of speed. Its own desired speed where its
-// present one is enough already.
+// (clearing_time_s early where that is within the band, else just by the start: late in the
+// preparation early asks for more than any driver does) at a speed within [low, high], out of its
+// actors' way (transport.hpp, ActorPlace); the one that needs the smaller change of speed. Its
+// own desired speed where its present one is enough already.
 std::optional<Clearance> ahead_in_next_lane(const ObservedVehicle& v, const ClearingSituation& at, double t_plan,
                                             double low, double high) {
   const int dir = sign(v.direction);
@@ -201,7 +202,9 @@ std::optional<Clearance> ahead_in_next_lane(const ObservedVehicle& v, const Clea
       if (z.direction == v.direction && z.lane == lane) front_p = std::max(front_p, dir > 0 ? z.to_s_m : -z.from_s_m);
     }
     const double target_p = front_p + 0.5 * v.length_m + kZoneMargin_m;
-    const double speed = (target_p - p) / t_plan;
+    // Early where that is within the band, else just by the start.
+    double speed = (target_p - p) / t_plan;
+    if (speed > high) speed = (target_p - p) / std::max(at.time_left_s, t_plan);
     if (speed > high) continue;
     const double drive_mps = std::max(speed, v.speed_mps);
     // In an actor's way: ahead of it now, and within its reach before the start.
