@@ -197,6 +197,44 @@ TEST(PlayPhases, ARoleBesideTheEgoIsCastForWhereItsWayLeadsFirst) {
   EXPECT_NE(casts_of(vehicle(8, 2062.0, 25.0, 1)).find("cutter = vehicle 8"), std::string::npos);
 }
 
+TEST(PlayPhases, AnActorThatMissesItsStartByFarIsReplacedOnlyWhileTheEgoKeepsItsSpeed) {
+  // The lead play from 2 km on; vehicle 7, 40 m ahead of the ego at its speed, is cast at once.
+  // From 1 s on it is seen 600 m ahead (it would have to fall back 560 m, beyond the transport
+  // band: it misses its start by far), vehicle 8 where 7 was. An ego that keeps its speed gets 8
+  // as the lead after 3 s of the miss. One that brakes at 1.5 m/s^2 all the while moves the estimate
+  // by seconds at every step (a driver who brakes is expected to go on braking): its actor is not
+  // given up meanwhile. (With the estimate of a braking ego, a cutter 70 m ahead was given up for
+  // a vehicle created 400 m behind, which missed its start by 54 m once the ego sped up again:
+  // cut-in, seed 59.)
+  ScenarioConfig sc = testing::minimal_scenario();
+  PlayConfig play = lead_play();
+  play.roles[0].type_index = 0;
+  sc.plays = {play};
+  auto casts_of = [&](double ego_accel_mps2) {
+    DirectorCore core(sc, 1);
+    StepInput in;
+    std::string casts;
+    double ego_s = 2000.0;
+    double ego_speed = 25.0;
+    for (Step k = 0; k < 60; ++k) {
+      in.step = k;
+      in.ego = testing::ego_at(k, ego_s, ego_speed);
+      in.ego.accel_mps2 = ego_accel_mps2;
+      const double lead_s = ego_s + 40.0;
+      in.world_prev = k < 10 ? std::vector<ObservedVehicle>{vehicle(7, lead_s, ego_speed)}
+                             : std::vector<ObservedVehicle>{vehicle(7, ego_s + 600.0, ego_speed), vehicle(8, lead_s, ego_speed)};
+      for (const PlayReport& r : core.step(in).reports) {
+        if (r.detail.rfind("cast: ", 0) == 0) casts += r.detail + "; ";
+      }
+      ego_s += ego_speed * 0.1;
+      ego_speed += ego_accel_mps2 * 0.1;
+    }
+    return casts;
+  };
+  EXPECT_EQ(casts_of(0.0), "cast: lead = vehicle 7; cast: lead = vehicle 8; ");
+  EXPECT_EQ(casts_of(-1.5), "cast: lead = vehicle 7; ");
+}
+
 // A play driven to trigger point 2 with one vehicle cast as the lead, then the ego `past_m`
 // beyond it with the lead `miss_m` from its start position. Returns the core and the last input.
 struct AtTrigger2 {

@@ -24,6 +24,9 @@ constexpr Step kBirthGraceSteps = 5;
 constexpr double kHopelessMiss = 2.0;
 constexpr double kLateLaneChange_s = 8.0;
 constexpr double kHopelessFor_s = 3.0;
+// While the ego speeds up or slows down faster than this, the estimate swings with it (a driver
+// who brakes is expected to go on braking for a while): no actor is judged hopeless then.
+constexpr double kSteadyEgo_mps2 = 0.3;
 // Closer to the start than this, and while the handover waits, the actors are aimed this far
 // ahead (stage.hpp, aim_of): a plan that runs out of time would otherwise stop correcting.
 constexpr double kAimHorizon_s = 4.0;
@@ -367,7 +370,7 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
     role.speed_error_mps = t.speed_error_mps;
     const bool hopeless = std::abs(t.position_error_m) > kHopelessMiss * play_.roles[r].position_tolerance_m ||
                           (v->lane != slots[r].lane && v->target_lane != slots[r].lane && time_to_start_s < kLateLaneChange_s);
-    if (!hopeless) {
+    if (!hopeless || std::abs(estimator_.smoothed_accel_mps2()) > kSteadyEgo_mps2) {
       role.hopeless_since_s = -1.0;
     } else if (role.hopeless_since_s < 0.0) {
       role.hopeless_since_s = in.ego.time_s;
