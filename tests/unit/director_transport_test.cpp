@@ -258,6 +258,28 @@ TEST_F(EgoInTheRightLaneOfTwo, LateOnTheEgosLeaderMovesAheadInTheNextLaneByTheSt
   EXPECT_NEAR(leader.s_m + moved->speed_mps * 10.0, 2296.0 + 2.25 + 5.0, 1e-9);
 }
 
+TEST_F(EgoInTheRightLaneOfTwo, AVehicleNeverMovesOutOfAZoneIntoALaneWhereAnActorIsAlongsideIt) {
+  // 20 s before a lead play's start (ego then at 2500 m): the ego's lane a zone from 3 to 37 m
+  // ahead and the lead's room from 2535.75 to 2572.25 m. A car 51 m ahead of the ego would stand
+  // in the room; the left lane is free of zones and roles. With the lead beside it there (14 m
+  // behind it, waiting to move in where the car is), moving over would cut in on the lead: it is
+  // sent ahead in its own lane instead. With the lead far behind, it moves over.
+  const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 2503.0, 2537.0},
+                                       {Direction::kForward, 0, 2535.75, 2572.25}};
+  const std::vector<int> role_lanes{0};
+  const ObservedVehicle car = vehicle(1, 2051.0, 25.0, 0);
+  auto clear = [&](std::vector<ActorPlace> actors) {
+    return clear_out(car, ClearingSituation{zones, 20.0, ego, 2500.0, role_lanes, lanes, cfg, std::move(actors)});
+  };
+  const auto beside = clear({{1, 2037.0, 25.0}});
+  ASSERT_TRUE(beside.has_value());
+  EXPECT_EQ(beside->lane, 0);
+  EXPECT_GT(beside->speed_mps, car.speed_mps);
+  const auto far = clear({{1, 1960.0, 25.0}});
+  ASSERT_TRUE(far.has_value());
+  EXPECT_EQ(far->lane, 1);
+}
+
 TEST_F(EgoInTheRightLaneOfTwo, AVehicleInAnActorsLaneIsClearedOnlyOnItsOwnSideOfTheActor) {
   // The cutter's room in the left lane from 3008 to 3046 m at the start, 40 s from now (ego then at
   // 3000 m, the ego's lane a zone from 3 to 60 m). A car in the left lane would stand in the room:

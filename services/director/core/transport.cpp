@@ -157,6 +157,22 @@ bool in_zone(const ZoneAtStart& z, int lane, double s_m, double length_m) {
   return lane == z.lane && s_m + 0.5 * length_m > z.from_s_m && s_m - 0.5 * length_m < z.to_s_m;
 }
 
+namespace {
+// An actor of `lane` alongside `v` now: from just behind it (the two lengths' half and
+// kSlotGapBehind_m) to the room it keeps ahead (kSlotMinGap_m and kSlotTimeGap_s at its speed),
+// taking its length as v's. Moving into that lane would cut in on the actor, which waits to move
+// into v's lane in turn. (A car asked out of the lead's room waited 40 s beside the lead, which
+// waited to move in beside it: lead vehicle, seed 10.)
+bool alongside_an_actor(const ObservedVehicle& v, int lane, const std::vector<ActorPlace>& actors) {
+  const int dir = sign(v.direction);
+  return std::any_of(actors.begin(), actors.end(), [&](const ActorPlace& a) {
+    const double ahead_m = dir * (v.s_m - a.s_m);
+    return a.lane == lane && ahead_m > -(v.length_m + kSlotGapBehind_m) &&
+           ahead_m < v.length_m + kSlotMinGap_m + kSlotTimeGap_s * a.speed_mps;
+  });
+}
+}  // namespace
+
 const ZoneAtStart* zone_hit(const std::vector<ZoneAtStart>& zones, const ObservedVehicle& v, double s_m) {
   for (const ZoneAtStart& z : zones) {
     if (z.direction == v.direction && (in_zone(z, v.lane, s_m, v.length_m) || in_zone(z, v.target_lane, s_m, v.length_m))) {
@@ -196,7 +212,7 @@ std::optional<Clearance> ahead_in_next_lane(const ObservedVehicle& v, const Clea
   std::optional<Clearance> best;
   double best_change = 0.0;
   for (int lane : {v.lane - 1, v.lane + 1}) {
-    if (lane < 0 || lane >= at.lanes.of(v.direction)) continue;
+    if (lane < 0 || lane >= at.lanes.of(v.direction) || alongside_an_actor(v, lane, at.actors)) continue;
     double front_p = -std::numeric_limits<double>::infinity();
     for (const ZoneAtStart& z : at.zones) {
       if (z.direction == v.direction && z.lane == lane) front_p = std::max(front_p, dir > 0 ? z.to_s_m : -z.from_s_m);
@@ -231,7 +247,7 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
   if (hit == nullptr) return std::nullopt;
   // A neighbouring lane that no zone and no role needs.
   auto free_lane = [&](int lane) {
-    if (lane < 0 || lane >= at.lanes.of(v.direction)) return false;
+    if (lane < 0 || lane >= at.lanes.of(v.direction) || alongside_an_actor(v, lane, at.actors)) return false;
     for (const ZoneAtStart& z : at.zones) {
       if (z.lane == lane && z.direction == v.direction) return false;
     }

@@ -116,7 +116,8 @@ ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>&
 // by the start at a speed within the band, is ahead of that lane's actors now (it never has to get
 // past one) and no actor behind it there catches up with it before the start at their present
 // speeds (it would hold that actor up on its way): onto the free lane first, then into such a
-// lane, then by its speed in its own.
+// lane, then by its speed in its own. Never into a lane where an actor is alongside it (from just
+// behind it to the room the actor keeps ahead): it would cut in on the actor.
 struct ActorPlace {
   int lane = 0;
   double s_m = 0.0;
