@@ -258,6 +258,25 @@ TEST_F(EgoInTheRightLaneOfTwo, LateOnTheEgosLeaderMovesAheadInTheNextLaneByTheSt
   EXPECT_NEAR(leader.s_m + moved->speed_mps * 10.0, 2296.0 + 2.25 + 5.0, 1e-9);
 }
 
+TEST_F(EgoInTheRightLaneOfTwo, AVehicleInTheZoneBehindTheCutterFallsBackByTheStartWhenItCannotEarly) {
+  // 14 s before a cut-in (ego then at 2350 m): the ego's lane a zone from 3 to 60 m ahead; in the
+  // left lane a zone from 25 m behind the ego to 4 m ahead of it, then the cutter's room from
+  // 2357.75 to 2394.25 m (cleared as one with it). A car 17 m behind the ego in the left lane, the
+  // cutter 29 m ahead of it there, would stand in the zone: it can only fall back. Behind the zone
+  // 5 s early it would need 37.2 m/s (the zone moves on with the ego), beyond the band; by the
+  // start 23.9 m/s: it slows down rather than drive at the top of the band into the zone.
+  const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 2353.0, 2410.0},
+                                       {Direction::kForward, 1, 2325.0, 2354.0},
+                                       {Direction::kForward, 1, 2357.75, 2394.25}};
+  const std::vector<int> role_lanes{1};
+  const ObservedVehicle car = vehicle(1, 1983.0, 25.0, 1);
+  const auto back = clear_out(car, ClearingSituation{zones, 14.0, ego, 2350.0, role_lanes, lanes, cfg, {{1, 2012.0, 25.0}}});
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->lane, 1);
+  EXPECT_NEAR(car.s_m + back->speed_mps * 14.0, 2325.0 - 2.25 - 5.0, 1e-9);
+  EXPECT_LT(back->speed_mps, car.speed_mps);
+}
+
 TEST_F(EgoInTheRightLaneOfTwo, AVehicleNeverMovesOutOfAZoneIntoALaneWhereAnActorIsAlongsideIt) {
   // 20 s before a lead play's start (ego then at 2500 m): the ego's lane a zone from 3 to 37 m
   // ahead and the lead's room from 2535.75 to 2572.25 m. A car 51 m ahead of the ego would stand

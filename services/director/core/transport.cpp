@@ -200,6 +200,18 @@ ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>&
 }
 
 namespace {
+// The speed at which a cleared vehicle covers `distance_m` (to a road position it must reach by the
+// start, `time_left_s` from now): in `t_plan_s` (clearing_time_s early) where that is within
+// [low, high], else just by the start. Early asks for more than any driver does late in the
+// preparation, and for a target behind a zone, which moves on with the ego, it asks for more than
+// the ego's speed: a car in the zone beside the ego, behind the cutter, was sent to the top of the
+// band instead of falling back 10 m, and stood in the zone (cut-in, seed 70).
+double clearing_speed_mps(double distance_m, double t_plan_s, double time_left_s, double low, double high) {
+  const double early = distance_m / t_plan_s;
+  if (early >= low && early <= high) return early;
+  return distance_m / std::max(time_left_s, t_plan_s);
+}
+
 // A neighbouring lane of `v`'s in which it can be ahead of every zone of that lane by the start
 // (clearing_time_s early where that is within the band, else just by the start: late in the
 // preparation early asks for more than any driver does) at a speed within [low, high], out of its
@@ -218,9 +230,7 @@ std::optional<Clearance> ahead_in_next_lane(const ObservedVehicle& v, const Clea
       if (z.direction == v.direction && z.lane == lane) front_p = std::max(front_p, dir > 0 ? z.to_s_m : -z.from_s_m);
     }
     const double target_p = front_p + 0.5 * v.length_m + kZoneMargin_m;
-    // Early where that is within the band, else just by the start.
-    double speed = (target_p - p) / t_plan;
-    if (speed > high) speed = (target_p - p) / std::max(at.time_left_s, t_plan);
+    const double speed = clearing_speed_mps(target_p - p, t_plan, at.time_left_s, low, high);
     if (speed > high) continue;
     const double drive_mps = std::max(speed, v.speed_mps);
     // In an actor's way: ahead of it now, and within its reach before the start.
@@ -301,17 +311,18 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
   // When neither way is within the band, the edge of the band towards the first way that keeps
   // the order: as far out as it gets (it was left with its last command before, which had asked
   // for too little).
-  // (The target is the edge's road position at the start, reached kClearEarly_s early: a vehicle
-  // planned to be behind a zone then drives on past that position before the start, out of a short
-  // zone ahead of it. A plan that really falls back slowed the vehicle's lane behind it down and
-  // made the plays fail more often: services/director/README.md, Pacing.)
+  // (The target is the edge's road position at the start, reached kClearEarly_s early where that
+  // is within the band, else by the start (clearing_speed_mps): a vehicle planned to be behind a
+  // zone then drives on past that position before the start, out of a short zone ahead of it. A
+  // plan that really falls back slowed the vehicle's lane behind it down and made the plays fail
+  // more often: services/director/README.md, Pacing.)
   std::optional<Clearance> best;
   std::optional<Clearance> closest;
   // Each way with whether it would pass an actor of its lane.
   const std::pair<double, bool> ways[] = {{ahead_p, behind_an_actor}, {behind_p, ahead_of_an_actor}};
   for (const auto& [target_p, passes_an_actor] : ways) {
     if (passes_an_actor || !keeps_order(target_p)) continue;
-    const double speed = (target_p - p) / t_plan;
+    const double speed = clearing_speed_mps(target_p - p, t_plan, t, low, high);
     if (speed < low || speed > high) {
       if (!closest) closest = Clearance{std::clamp(speed, low, high), v.lane};
       continue;
