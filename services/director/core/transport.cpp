@@ -157,22 +157,6 @@ bool in_zone(const ZoneAtStart& z, int lane, double s_m, double length_m) {
   return lane == z.lane && s_m + 0.5 * length_m > z.from_s_m && s_m - 0.5 * length_m < z.to_s_m;
 }
 
-namespace {
-// An actor of `lane` alongside `v` now: from just behind it (the two lengths' half and
-// kSlotGapBehind_m) to the room it keeps ahead (kSlotMinGap_m and kSlotTimeGap_s at its speed),
-// taking its length as v's. Moving into that lane would cut in on the actor, which waits to move
-// into v's lane in turn. (A car asked out of the lead's room waited 40 s beside the lead, which
-// waited to move in beside it: lead vehicle, seed 10.)
-bool alongside_an_actor(const ObservedVehicle& v, int lane, const std::vector<ActorPlace>& actors) {
-  const int dir = sign(v.direction);
-  return std::any_of(actors.begin(), actors.end(), [&](const ActorPlace& a) {
-    const double ahead_m = dir * (v.s_m - a.s_m);
-    return a.lane == lane && ahead_m > -(v.length_m + kSlotGapBehind_m) &&
-           ahead_m < v.length_m + kSlotMinGap_m + kSlotTimeGap_s * a.speed_mps;
-  });
-}
-}  // namespace
-
 const ZoneAtStart* zone_hit(const std::vector<ZoneAtStart>& zones, const ObservedVehicle& v, double s_m) {
   for (const ZoneAtStart& z : zones) {
     if (z.direction == v.direction && (in_zone(z, v.lane, s_m, v.length_m) || in_zone(z, v.target_lane, s_m, v.length_m))) {
@@ -200,6 +184,20 @@ ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>&
 }
 
 namespace {
+// An actor of `lane` alongside `v` now: from just behind it (the two lengths' half and
+// kSlotGapBehind_m) to the room it keeps ahead (kSlotMinGap_m and kSlotTimeGap_s at its speed),
+// taking its length as v's. Moving into that lane would cut in on the actor, which waits to move
+// into v's lane in turn. (A car asked out of the lead's room waited 40 s beside the lead, which
+// waited to move in beside it: lead vehicle, seed 10.)
+bool alongside_an_actor(const ObservedVehicle& v, int lane, const std::vector<ActorPlace>& actors) {
+  const int dir = sign(v.direction);
+  return std::any_of(actors.begin(), actors.end(), [&](const ActorPlace& a) {
+    const double ahead_m = dir * (v.s_m - a.s_m);
+    return a.lane == lane && ahead_m > -(v.length_m + kSlotGapBehind_m) &&
+           ahead_m < v.length_m + kSlotMinGap_m + kSlotTimeGap_s * a.speed_mps;
+  });
+}
+
 // The speed at which a cleared vehicle covers `distance_m` (to a road position it must reach by the
 // start, `time_left_s` from now): in `t_plan_s` (clearing_time_s early) where that is within
 // [low, high], else just by the start. Early asks for more than any driver does late in the
