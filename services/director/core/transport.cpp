@@ -139,16 +139,23 @@ std::vector<ZoneAtStart> zones_of(const PlayConfig& play, Direction ego_directio
   return out;
 }
 
+namespace {
+// The room an actor of `length_m` at `s_m` driving at `speed_mps` keeps around it (slot_zones).
+ZoneAtStart actor_room(Direction dir, int lane, double s_m, double length_m, double speed_mps) {
+  const double half = 0.5 * length_m;
+  const double a = s_m - sign(dir) * (half + kSlotGapBehind_m);
+  const double b = s_m + sign(dir) * (half + kSlotMinGap_m + kSlotTimeGap_s * speed_mps);
+  return {dir, lane, std::min(a, b), std::max(a, b)};
+}
+}  // namespace
+
 std::vector<ZoneAtStart> slot_zones(const std::vector<Slot>& slots, const std::vector<double>& lengths_m,
                                     Direction ego_direction) {
   std::vector<ZoneAtStart> out;
   for (std::size_t i = 0; i < slots.size(); ++i) {
     const Slot& slot = slots[i];
     if (slot.direction != ego_direction) continue;
-    const double half = 0.5 * lengths_m[i];
-    const double a = slot.s_m - sign(slot.direction) * (half + kSlotGapBehind_m);
-    const double b = slot.s_m + sign(slot.direction) * (half + kSlotMinGap_m + kSlotTimeGap_s * slot.speed_mps);
-    out.push_back({slot.direction, slot.lane, std::min(a, b), std::max(a, b)});
+    out.push_back(actor_room(slot.direction, slot.lane, slot.s_m, lengths_m[i], slot.speed_mps));
   }
   return out;
 }
@@ -184,17 +191,14 @@ ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>&
 }
 
 namespace {
-// An actor of `lane` alongside `v` now: from just behind it (the two lengths' half and
-// kSlotGapBehind_m) to the room it keeps ahead (kSlotMinGap_m and kSlotTimeGap_s at its speed),
-// taking its length as v's. Moving into that lane would cut in on the actor, which waits to move
-// into v's lane in turn. (A car asked out of the lead's room waited 40 s beside the lead, which
-// waited to move in beside it: lead vehicle, seed 10.)
+// An actor of `lane` alongside `v` now: `v` overlaps the room the actor keeps around it where it
+// is (actor_room, the actor's length taken as v's). Moving into that lane would cut in on the
+// actor, which waits to move into v's lane in turn. (A car asked out of the lead's room waited
+// 40 s beside the lead, which waited to move in beside it: lead vehicle, seed 10.)
 bool alongside_an_actor(const ObservedVehicle& v, int lane, const std::vector<ActorPlace>& actors) {
-  const int dir = sign(v.direction);
   return std::any_of(actors.begin(), actors.end(), [&](const ActorPlace& a) {
-    const double ahead_m = dir * (v.s_m - a.s_m);
-    return a.lane == lane && ahead_m > -(v.length_m + kSlotGapBehind_m) &&
-           ahead_m < v.length_m + kSlotMinGap_m + kSlotTimeGap_s * a.speed_mps;
+    return a.lane == lane &&
+           in_zone(actor_room(v.direction, a.lane, a.s_m, v.length_m, a.speed_mps), lane, v.s_m, v.length_m);
   });
 }
 
