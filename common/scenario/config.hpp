@@ -175,6 +175,14 @@ struct PlayRoleConfig {
   double speed_tolerance_mps = 2.5;
 };
 
+// The speed a play asks for (a role's start speed, a speed action) with the ego at
+// `ego_speed_mps`: `speed_mps` itself where it is absolute, else added to the ego's; never below
+// standing.
+inline double play_speed_mps(bool absolute_speed, double speed_mps, double ego_speed_mps) {
+  const double v = absolute_speed ? speed_mps : ego_speed_mps + speed_mps;
+  return v > 0.0 ? v : 0.0;
+}
+
 enum class PlayActionKind : std::uint8_t { kSpeed = 0, kLaneChange = 1, kIndicator = 2 };
 
 // A scripted action of one role once the play runs. The actions of a role run in the order they

@@ -17,6 +17,54 @@ using testing::at_trigger2;
 using testing::lead_play;
 using testing::vehicle;
 
+// Drives a plan step by step at its rate: to the cruise speed, cruise, and the final change once
+// it is due; the distance covered and the speed at the end.
+struct Driven {
+  double distance_m = 0.0;
+  double speed_mps = 0.0;
+};
+Driven drive_plan(const SpeedPlan& plan, double v0, double vf, double time_s, double rate_mps2) {
+  const double dt = 1e-3;
+  Driven d{0.0, v0};
+  for (double t = 0.0; t < time_s - 0.5 * dt; t += dt) {
+    const double target = time_s - t <= plan.final_change_s ? vf : plan.cruise_mps;
+    const double v = std::clamp(target, d.speed_mps - rate_mps2 * dt, d.speed_mps + rate_mps2 * dt);
+    d.distance_m += 0.5 * (d.speed_mps + v) * dt;
+    d.speed_mps = v;
+  }
+  return d;
+}
+
+TEST(PlanSpeed, ATrapezoidCoversTheDistanceAndEndsAtTheFinalSpeedWhenTheBandAllows) {
+  const SpeedBand band{10.0, 40.0};
+  // Slower than both ends, between them, faster than both.
+  for (const double distance : {520.0, 600.0, 680.0}) {
+    const SpeedPlan plan = plan_speed(28.0, 22.0, 24.0, distance, band, 0.7);
+    ASSERT_TRUE(plan.feasible()) << distance;
+    EXPECT_NEAR(plan.final_change_s, std::abs(plan.cruise_mps - 22.0) / 0.7, 1e-9);
+    const Driven d = drive_plan(plan, 28.0, 22.0, 24.0, 0.7);
+    EXPECT_NEAR(d.distance_m, distance, 0.1) << distance;
+    EXPECT_NEAR(d.speed_mps, 22.0, 0.01);
+  }
+}
+
+TEST(PlanSpeed, WhereTheBandOrTheRateCannotCoverTheDistanceThePlanSaysByHowMuchItMisses) {
+  // The stopper of the stopped-vehicle play when the ego sped up late (stop 37, seed 36): from
+  // 27.9 m/s, 742 m in 24 s to arrive at 22.2 m/s. The band (the start speed + 8 m/s) caps the
+  // cruise at 30.2 m/s; without the cap the rate alone still leaves it short.
+  const SpeedPlan capped = plan_speed(27.9, 22.2, 24.0, 742.0, SpeedBand{14.2, 30.2}, 0.84);
+  EXPECT_DOUBLE_EQ(capped.cruise_mps, 30.2);
+  EXPECT_NEAR(capped.shortfall_m, 742.0 - drive_plan(capped, 27.9, 22.2, 24.0, 0.84).distance_m, 0.1);
+  EXPECT_GT(capped.shortfall_m, 40.0);
+  const SpeedPlan by_rate = plan_speed(27.9, 22.2, 24.0, 742.0, SpeedBand{14.2, 50.0}, 0.84);
+  EXPECT_LT(by_rate.cruise_mps, 50.0);
+  EXPECT_NEAR(by_rate.shortfall_m, 742.0 - drive_plan(by_rate, 27.9, 22.2, 24.0, 0.84).distance_m, 0.1);
+  EXPECT_GT(by_rate.shortfall_m, 20.0);
+  EXPECT_LT(by_rate.shortfall_m, capped.shortfall_m);
+  // Too fast and too close: it misses the other way (arrives ahead of the slot).
+  EXPECT_LT(plan_speed(30.0, 22.0, 20.0, 300.0, SpeedBand{14.0, 38.0}, 0.7).shortfall_m, 0.0);
+}
+
 TEST(Transport, AnActorTrackingItsCommandReachesTheSlotWithinAMetreAndTheSlotSpeed) {
   const PlayConfig play = lead_play();
   DirectorConfig cfg;

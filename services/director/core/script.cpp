@@ -43,7 +43,7 @@ std::size_t Script::step(double since_handover_s, const EgoObservation& ego,
       if (!due(a, since_handover_s, ego, *actor)) break;
       switch (a.kind) {
         case PlayActionKind::kSpeed:
-          c.speed_mps = std::max(0.0, a.absolute_speed ? a.speed_mps : ego.speed_mps + a.speed_mps);
+          c.speed_mps = play_speed_mps(a.absolute_speed, a.speed_mps, ego.speed_mps);
           c.accel_mps2 = c.decel_mps2 = a.rate_mps2;
           break;
         case PlayActionKind::kLaneChange:

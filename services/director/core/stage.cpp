@@ -52,7 +52,7 @@ Aim aim_of(double time_to_start_s, double trigger2_s_m, double speed_at_start_mp
 }
 
 double start_speed_mps(const PlayRoleConfig& role, double ego_speed_mps) {
-  return std::max(0.0, role.absolute_speed ? role.speed_mps : ego_speed_mps + role.speed_mps);
+  return play_speed_mps(role.absolute_speed, role.speed_mps, ego_speed_mps);
 }
 
 std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int ego_lane, const Aim& aim,
