@@ -148,7 +148,9 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
   }
   const double n = static_cast<double>(runs.size());
   std::printf("\n== %s: %zu runs ==\n", name.c_str(), runs.size());
-  std::printf("success                        %d / %zu (%.1f %%)", ok, runs.size(), 100.0 * ok / n);
+  const bench::RateInterval interval = bench::wilson_interval(ok, static_cast<int>(runs.size()));
+  std::printf("success                        %d / %zu (%.1f %%, 95 %% interval %.0f-%.0f %%)", ok, runs.size(),
+              100.0 * ok / n, 100.0 * interval.low, 100.0 * interval.high);
   for (const auto& [v, c] : by_variant) std::printf("   %s %d/%d", v.c_str(), c.first, c.second);
   std::printf("\n");
   for (const auto& [c, k] : causes) std::printf("  failed %3d x  %s\n", k, c.c_str());

@@ -1,5 +1,7 @@
 #include "play_runs.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 #include <utility>
 
@@ -322,6 +324,16 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
     if (end_time_s >= 0.0 && in.ego.time_s >= end_time_s) break;
   }
   return r;
+}
+
+RateInterval wilson_interval(int successes, int runs, double z) {
+  if (runs <= 0) return {};
+  const double n = runs;
+  const double p = successes / n;
+  const double z2 = z * z;
+  const double centre = (p + z2 / (2.0 * n)) / (1.0 + z2 / n);
+  const double half = z * std::sqrt(p * (1.0 - p) / n + z2 / (4.0 * n * n)) / (1.0 + z2 / n);
+  return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
 }
 
 }  // namespace entourage::bench
