@@ -159,7 +159,7 @@ TriggerTimes trigger_times_undirected(const ScenarioConfig& sc, std::uint64_t se
 // The Wilson score interval of a success rate (Wilson 1927): `successes` of `runs` trials, at the
 // normal quantile `z` (1.96: 95 %). Unlike p +- z sqrt(p (1 - p) / n) it stays within [0, 1] and
 // does not shrink to nothing at 0 or n successes, which 50 runs of a play that mostly succeeds
-// need: 45 of 50 is 78-96 %, not 90 +- 8 %.
+// need: 45 of 50 is 79-96 %, not 90 +- 8 %.
 struct RateInterval {
   double low = 0.0;
   double high = 1.0;
