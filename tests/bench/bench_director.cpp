@@ -6,13 +6,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "cli/args.hpp"
+#include "paired_runs.hpp"
 #include "play_runs.hpp"
 #include "scenario/loader.hpp"
 
@@ -205,6 +208,18 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
               overlaps_actor, overlaps_other, ego_contacts);
 }
 
+void print_paired(const std::string& path, const std::map<std::uint64_t, bool>& before,
+                  const std::vector<bench::PlayRunResult>& results, std::uint64_t first_seed) {
+  std::map<std::uint64_t, bool> now;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    now[first_seed + i] = results[i].final_phase == director::PlayPhase::kDone;
+  }
+  const bench::PairedRuns p = bench::pair_runs(before, now);
+  std::printf("paired with %s: gained %d, lost %d (both done %d, both failed %d, not in it %d); "
+              "McNemar's p = %.3f\n",
+              path.c_str(), p.gained, p.lost, p.both_done, p.both_failed, p.unpaired, bench::flips_p_value(p.gained, p.lost));
+}
+
 int run(int argc, char** argv) {
   std::string scenario_path;
   int runs = 50;
@@ -226,6 +241,11 @@ int run(int argc, char** argv) {
   args.flag("trace", "every play report of every run as well (to stderr)", &trace);
   args.flag("trace-traffic", "the vehicles around the ego every 2 s of every play as well (to stderr)", &trace_traffic);
   args.flag("plain", "the scenario's own ego driver in every run (only the traffic seed varies)", &plain);
+  std::string paired_path;
+  args.option("paired", "FILE",
+              "a previous --verbose output of the same scenario: the runs this version gained and lost against it, "
+              "paired by seed, and McNemar's p-value",
+              &paired_path);
   if (const auto rc = args.parse_or_exit(argc, argv)) return *rc;
   if (runs < 1 || runs > 100000) {
     std::cerr << "entourage-bench-director: --runs wants a number from 1 to 100000\n";
@@ -234,6 +254,21 @@ int run(int argc, char** argv) {
   if (first < 0 || first > 100000) {
     std::cerr << "entourage-bench-director: --first wants a number from 0 to 100000\n";
     return 2;
+  }
+  std::map<std::uint64_t, bool> paired_before;
+  if (!paired_path.empty()) {
+    if (scenario_path.empty()) {
+      std::cerr << "entourage-bench-director: --paired wants one --scenario (the runs are paired by seed)\n";
+      return 2;
+    }
+    std::ifstream f(paired_path);
+    std::stringstream text;
+    text << f.rdbuf();
+    paired_before = bench::outcomes_by_seed(text.str());
+    if (!f || paired_before.empty()) {
+      std::cerr << "entourage-bench-director: " << paired_path << " has no run lines (want a --verbose output)\n";
+      return 2;
+    }
   }
   std::vector<std::string> paths;
   if (scenario_path.empty()) {
@@ -279,6 +314,7 @@ int run(int argc, char** argv) {
       }
     }
     print_play(loaded.config.plays.front().name + " (" + loaded.config.name + ")", results, variants);
+    if (!paired_path.empty()) print_paired(paired_path, paired_before, results, seed + static_cast<std::uint64_t>(first));
   }
   return 0;
 }

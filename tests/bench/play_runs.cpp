@@ -47,7 +47,9 @@ double bumper_gap_m(const ObservedVehicle& a, const ObservedVehicle& b) {
 }
 
 // The traffic trace: every kTrafficTraceSteps steps, the vehicles from kTraceBehind_m behind the
-// ego to kTraceAhead_m ahead of it.
+// ego to kTraceAhead_m ahead of it, each as [<]ID@OFFSET/SPEED/L LANE/k TYPE INDEX (< : oncoming;
+// the type's index in the scenario's vehicle types), then a lane change's target or the
+// indicator, and the director's control (T, C, R).
 constexpr Step kTrafficTraceSteps = 20;
 constexpr double kTraceBehind_m = 300.0;
 constexpr double kTraceAhead_m = 600.0;
@@ -72,8 +74,8 @@ void trace_traffic(std::FILE* out, const StepInput& in) {
             [](const ObservedVehicle& a, const ObservedVehicle& b) { return a.s_m < b.s_m; });
   std::fprintf(out, "  t %.1f ego %.0f v %.1f lane %d |", in.ego.time_s, in.ego.s_m, in.ego.speed_mps, in.ego.lane);
   for (const ObservedVehicle& v : near) {
-    std::fprintf(out, " %s%u@%+.0f/%.1f/L%d", v.direction == in.ego.direction ? "" : "<", v.id, v.s_m - in.ego.s_m,
-                 v.speed_mps, v.lane);
+    std::fprintf(out, " %s%u@%+.0f/%.1f/L%d/k%u", v.direction == in.ego.direction ? "" : "<", v.id, v.s_m - in.ego.s_m,
+                 v.speed_mps, v.lane, static_cast<unsigned>(v.type_index));
     // A lane change under way shows its target (L0>1), an indicator without one its side (L0<, L0>).
     if (v.lane != v.target_lane) {
       std::fprintf(out, ">%d", v.target_lane);

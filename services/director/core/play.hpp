@@ -144,6 +144,7 @@ class PlayRun {
   // Whether a vehicle this play holds keeps the lane change it was asked for instead of `lane`
   // (transport.hpp, keeps_lane_request).
   bool holds_lane_request(const ObservedVehicle& v, int lane, double now_s) const;
+  bool holding_back(VehicleId id) const;  // holds back to let another in (let_in)
   // Notes a lane change asked of `v` by `c` (one in its own lane ends a request).
   void note_lane_request(const ObservedVehicle& v, const ActorControl& c, double now_s);
   // What keeps the start condition from holding now ("" : nothing); sets the roles' errors.

@@ -26,6 +26,10 @@ bool PlayRun::holds_lane_request(const ObservedVehicle& v, int lane, double now_
   return keeps_lane_request(v, asked->second, lane, now_s);
 }
 
+bool PlayRun::holding_back(VehicleId id) const {
+  return std::any_of(letting_in_.begin(), letting_in_.end(), [&](const auto& e) { return e.second == id; });
+}
+
 void PlayRun::note_lane_request(const ObservedVehicle& v, const ActorControl& c, double now_s) {
   if (c.lane < 0 || c.lane == v.lane) {
     lane_requests_.erase(v.id);
@@ -152,9 +156,6 @@ void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
     lane_requests_.erase(id);
     command(id, transported(kOwnDesiredSpeed_mps, v->lane), in.step, out);
   };
-  auto holds_back = [&](VehicleId id) {
-    return std::any_of(letting_in_.begin(), letting_in_.end(), [&](const auto& e) { return e.second == id; });
-  };
   for (auto it = letting_in_.begin(); it != letting_in_.end();) {
     if (waiting_for_lane(it->first) >= 0) {
       ++it;
@@ -167,7 +168,7 @@ void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
   for (VehicleId id : cleared) {
     const int lane = waiting_for_lane(id);
     // One holding back for another is not let in itself meanwhile.
-    if (lane < 0 || holds_back(id)) continue;
+    if (lane < 0 || holding_back(id)) continue;
     const ObservedVehicle& v = *find(in, id);
     const ObservedVehicle* f = follower_to_let_in(v, lane, in.world, in.ego);
     const auto before = letting_in_.find(id);
@@ -182,10 +183,16 @@ void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
     }
     const auto i = static_cast<std::size_t>(f - in.world.data());
     const bool for_it_already = before != letting_in_.end() && before->second == f->id;
-    if ((holds_back(f->id) && !for_it_already) || !(is_cleared(f->id) || in.available[i])) {
+    if ((holding_back(f->id) && !for_it_already) || !(is_cleared(f->id) || in.available[i])) {
       continue;  // it lets in another, or it is an actor or another play's
     }
-    if (is_cleared(f->id) && holds_lane_request(*f, f->lane, in.ego.time_s)) continue;  // it waits to move over itself
+    // It waits to move over itself, unless into the lane of the one it would let in: two cleared
+    // vehicles alongside each other, each asked into the other's lane, each waited for the other
+    // to let it in (a cut-in's cutter held up behind them for 30 s, seed 154); the one ahead moves
+    // first.
+    const auto f_asked = lane_requests_.find(f->id);
+    const bool swap = f_asked != lane_requests_.end() && f_asked->second.lane == v.lane;
+    if (is_cleared(f->id) && holds_lane_request(*f, f->lane, in.ego.time_s) && !swap) continue;
     // One vehicle holds back for each: one that did so before and is no longer just behind it (it
     // fell back, or another came between) drives on as it likes.
     if (before != letting_in_.end() && !for_it_already) stop_holding_back(before->second);
