@@ -262,10 +262,14 @@ int run(int argc, char** argv) {
       return 2;
     }
     std::ifstream f(paired_path);
+    if (!f) {
+      std::cerr << "entourage-bench-director: cannot read " << paired_path << "\n";
+      return 2;
+    }
     std::stringstream text;
     text << f.rdbuf();
     paired_before = bench::outcomes_by_seed(text.str());
-    if (!f || paired_before.empty()) {
+    if (paired_before.empty()) {
       std::cerr << "entourage-bench-director: " << paired_path << " has no run lines (want a --verbose output)\n";
       return 2;
     }

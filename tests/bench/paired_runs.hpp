@@ -5,7 +5,7 @@
 // success rates, and by McNemar's exact test on those flips: under "no effect" a flipped run is
 // as likely gained as lost (a fair coin), and the p-value is how often a coin gives a split at
 // least as uneven. (Stop 39: a deadlock mend flipped 23 of 200 cut-in runs, 10 gained and 13 lost,
-// p = 0.68: the change of the success rate, 171 to 168, was the bench's sensitivity to any change.)
+// p = 0.68: its change of the success rate, 171 to 168, is what chance gives any change.)
 
 #include <cstdint>
 #include <map>
