@@ -4,25 +4,41 @@
 #include <cmath>
 #include <sstream>
 
+#include "director/core/play.hpp"
+#include "play_runs.hpp"
+
 namespace entourage::bench {
 
 namespace {
-// The ego drivers' names as the verbose line prints them (to_string(EgoVariant)); one has two words.
-constexpr const char* kTwoWordVariantFirst = "changes";
+// The ego driver's name as the verbose line prints it (to_string(EgoVariant)) at the start of
+// `rest`; some names have two words. Empty when none fits.
+std::string variant_at(const std::string& rest) {
+  for (const EgoVariant v : {EgoVariant::kSteady, EgoVariant::kBrakes, EgoVariant::kChangesLane}) {
+    const std::string name = to_string(v);
+    if (rest.compare(0, name.size(), name) == 0 && (rest.size() == name.size() || rest[name.size()] == ' ')) {
+      return name;
+    }
+  }
+  return {};
+}
 }  // namespace
 
 std::map<std::uint64_t, bool> outcomes_by_seed(const std::string& verbose_text) {
+  const std::string done = director::to_string(director::PlayPhase::kDone);
   std::map<std::uint64_t, bool> out;
   std::istringstream lines(verbose_text);
   std::string line;
   while (std::getline(lines, line)) {
     std::istringstream words(line);
-    std::string run_word, index, seed_word, variant, phase;
+    std::string run_word, index, seed_word, rest, phase;
     std::uint64_t seed = 0;
-    if (!(words >> run_word >> index >> seed_word >> seed >> variant) || run_word != "run" || seed_word != "seed") continue;
-    if (variant == kTwoWordVariantFirst && !(words >> variant)) continue;
-    if (!(words >> phase)) continue;
-    out[seed] = phase == "done";
+    if (!(words >> run_word >> index >> seed_word >> seed) || run_word != "run" || seed_word != "seed") continue;
+    std::getline(words >> std::ws, rest);
+    const std::string variant = variant_at(rest);
+    if (variant.empty()) continue;
+    std::istringstream after(rest.substr(variant.size()));
+    if (!(after >> phase)) continue;
+    out[seed] = phase == done;
   }
   return out;
 }
