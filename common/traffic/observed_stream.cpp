@@ -56,6 +56,7 @@ ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, co
   sampled_length_m_ = how.road_length_m - how.settled_from_m;
   double next_snapshot = how.warmup_s;
   double carried = 0.0;  // the snapshots' flow times their length, each vehicle at its own speed
+  double carried_by_all = 0.0;  // the same with the vehicles in the middle of an overtaking
   while (snapshots_.size() < static_cast<std::size_t>(how.snapshots)) {
     sim.step();
     if (sim.time_s() + 1e-9 < next_snapshot) continue;
@@ -64,11 +65,13 @@ ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, co
     for (const Vehicle& v : sim.fleet().vehicles()) {
       // Vehicles in the middle of an overtaking are left out: a window cannot start with a
       // vehicle beside the one it passes (the stream loses a fraction of a percent).
-      if (v.direction != dir || v.overtaking.active() || v.lane >= lanes) continue;
+      if (v.direction != dir) continue;
       const double along_m = dir == Direction::kForward ? v.s_m : how.road_length_m - v.s_m;
-      if (along_m >= how.settled_from_m && along_m < how.road_length_m) {
-        snap.push_back({along_m - how.settled_from_m, v});
-      }
+      if (along_m < how.settled_from_m || along_m >= how.road_length_m) continue;
+      crossing_speeds_.add(v.speed_mps);
+      carried_by_all += v.speed_mps;
+      if (v.overtaking.active() || v.lane >= lanes) continue;
+      snap.push_back({along_m - how.settled_from_m, v});
     }
     std::sort(snap.begin(), snap.end(), [](const auto& a, const auto& b) { return a.offset_m < b.offset_m; });
     for (const StreamVehicle& sv : snap) {
@@ -82,6 +85,7 @@ ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, co
   for (auto& pairs : speed_ratio_by_desired_) std::sort(pairs.begin(), pairs.end());
   const double observed_length = sampled_length_m_ * static_cast<double>(snapshots_.size());
   vehicle_speeds_.finish();
+  crossing_speeds_.finish();
   // The same flow counted the way the platoons enter (each member at its leader's speed). Each
   // density is scaled so that what it carries is the demanded flow: the vehicles' (what the
   // window's regulation aims at and the catch-up rates count) with their own speeds, the platoons'
@@ -97,6 +101,7 @@ ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, co
     return carried_sum > 0.0 ? count * flow_ / carried_sum : count / observed_length;
   };
   vehicle_density_ = scaled(static_cast<double>(vehicle_speeds_.size()), carried);
+  crossing_density_ = scaled(static_cast<double>(crossing_speeds_.size()), carried_by_all);
   platoon_density_ = scaled(static_cast<double>(platoons_.size()), carried_by_platoons);
 }
 
@@ -181,20 +186,25 @@ const Platoon& ObservedStream::draw(Random& rng, Weight w) const {
 }
 
 double ObservedStream::per_vehicle_rate_per_s(double sum_over_vehicles) const {
-  const auto n = static_cast<double>(vehicle_speeds_.size());
-  return n == 0.0 ? 0.0 : vehicle_density_ * sum_over_vehicles / n;
+  const auto n = static_cast<double>(crossing_speeds_.size());
+  return n == 0.0 ? 0.0 : crossing_density_ * sum_over_vehicles / n;
+}
+
+double ObservedStream::passing_share() const {
+  const auto all = static_cast<double>(crossing_speeds_.size());
+  return all == 0.0 ? 0.0 : 1.0 - static_cast<double>(vehicle_speeds_.size()) / all;
 }
 
 double ObservedStream::vehicles_rear_per_s(double u) const {
-  return per_vehicle_rate_per_s(vehicle_speeds_.sum_faster_by(u));
+  return per_vehicle_rate_per_s(crossing_speeds_.sum_faster_by(u));
 }
 
 double ObservedStream::vehicles_front_per_s(double u) const {
-  return per_vehicle_rate_per_s(vehicle_speeds_.sum_slower_by(u));
+  return per_vehicle_rate_per_s(crossing_speeds_.sum_slower_by(u));
 }
 
 double ObservedStream::vehicles_oncoming_per_s(double u) const {
-  return per_vehicle_rate_per_s(vehicle_speeds_.sum_closing_with(u));
+  return per_vehicle_rate_per_s(crossing_speeds_.sum_closing_with(u));
 }
 
 double ObservedStream::rate_rear_per_s(double u) const {

@@ -137,8 +137,13 @@ class ObservedStream {
   // stationary stream (k E[(v - u)+] over the space-mean distribution of the vehicles' own speeds),
   // not the platoons' leaders' speeds the arrivals are drawn with: on the freeway a platoon's
   // followers mostly close in on their leader, and at 100 km/h the leaders' speeds gave 1.23 times
-  // the active and 0.90 times the passive rate of the vehicles' own (stop 27).
+  // the active and 0.90 times the passive rate of the vehicles' own (stop 27). Vehicles in the
+  // middle of an overtaking are counted here (they are left out of the snapshots the window is
+  // filled from, not out of the stream): a probe at 85 km/h on a straight rural road is passed by
+  // them a quarter of the times it is passed (stop 40, entourage-bench-catchups on a whole road).
   double vehicles_rear_per_s(double window_speed_mps) const;
+  // The share of the stream's vehicles that were in the middle of an overtaking when observed.
+  double passing_share() const;
   double vehicles_front_per_s(double window_speed_mps) const;
   double vehicles_oncoming_per_s(double window_speed_mps) const;
   const Platoon& draw_rear(Random& rng, double window_speed_mps) const;
@@ -172,6 +177,10 @@ class ObservedStream {
   std::vector<Platoon> platoons_;
   SortedSpeeds platoon_speeds_;  // the platoons' (their leaders')
   SortedSpeeds vehicle_speeds_;  // every observed vehicle's own
+  // Every vehicle's own speed, those in the middle of an overtaking too (the catch-up rates), and
+  // their density scaled like vehicle_density_.
+  SortedSpeeds crossing_speeds_;
+  double crossing_density_ = 0.0;
   // Per vehicle type (index): (basic desired speed, speed / desired speed) of every observed
   // vehicle, sorted by desired speed.
   std::vector<std::vector<std::pair<double, double>>> speed_ratio_by_desired_;

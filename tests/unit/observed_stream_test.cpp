@@ -83,6 +83,26 @@ TEST(ObservedStream, CatchUpRatesAreThoseOfTheVehiclesOwnSpeeds) {
   EXPECT_DOUBLE_EQ(s.vehicles_rear_per_s(60.0), 0.0);
 }
 
+// On a two-way road some vehicles are in the middle of an overtaking at any time; they are left out
+// of the snapshots the window is filled from but not out of the catch-up rates: a standing observer
+// is still passed by the whole flow, and the rates' difference is the flow relative to it.
+TEST(ObservedStream, CatchUpRatesCountTheVehiclesInTheMiddleOfAPass) {
+  const ScenarioConfig sc = testing::shipped_scenario("rural");
+  const ObservedStream s(sc, Direction::kForward, StreamObservation{}, 3);
+  EXPECT_GT(s.passing_share(), 0.005);
+  EXPECT_LT(s.passing_share(), 0.2);
+  EXPECT_NEAR(s.vehicles_rear_per_s(0.0), sc.forward.flow_veh_per_s, 1e-9);
+  // The rates' density is that of every vehicle: oncoming k (v + u) minus passive k (v - u)+ plus
+  // active k (u - v)+ is 2 k u, with k above the snapshots' own density times the share they are.
+  const double u = 22.0;
+  const double k = (s.vehicles_oncoming_per_s(u) - s.vehicles_rear_per_s(u) + s.vehicles_front_per_s(u)) / (2.0 * u);
+  EXPECT_GT(k, s.density_per_m() * (1.0 - s.passing_share()));
+  EXPECT_GT(std::abs(k - s.density_per_m()), 1e-3 * s.density_per_m());  // not the snapshots' vehicles alone
+  EXPECT_NEAR(s.vehicles_oncoming_per_s(0.0), sc.forward.flow_veh_per_s, 1e-9);
+  const ObservedStream freeway(testing::freeway_scenario(), Direction::kForward, StreamObservation{}, 3);
+  EXPECT_EQ(freeway.passing_share(), 0.0);
+}
+
 TEST(SortedSpeeds, SumsMatchADirectPassAtAnySpeed) {
   Random rng(5);
   SortedSpeeds sorted;
