@@ -14,6 +14,7 @@
 #include "traffic/handoff.hpp"
 #include "traffic/headways.hpp"
 #include "traffic/observed_stream.hpp"
+#include "traffic/road_sim.hpp"
 
 namespace entourage::recording {
 
@@ -147,11 +148,25 @@ FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int dire
   return f;
 }
 
+namespace {
+// Whether the catch-ups of an ego at `ego_s_m` count against the prediction: its whole window on a
+// stretch like the reference road.
+bool counts_catch_ups(const ScenarioConfig& sc, double ego_s_m) {
+  const WindowBounds w = WindowBounds::around(ego_s_m, sc.window);
+  return like_reference_road(sc.road, w.rear_edge_m, w.front_edge_m);
+}
+}  // namespace
+
 PastTheEgo measure_past_ego(const Tables& t, const ScenarioConfig& sc) {
   PastTheEgo p;
   if (t.ego.size() < 2) return p;
   std::unordered_map<std::uint64_t, double> ego_s;
-  for (const auto& e : t.ego) ego_s[e.step] = e.s_m;
+  std::unordered_set<std::uint64_t> counted_steps;
+  for (const auto& e : t.ego) {
+    ego_s[e.step] = e.s_m;
+    if (counts_catch_ups(sc, e.s_m)) counted_steps.insert(e.step);
+  }
+  p.counted_share = static_cast<double>(counted_steps.size()) / static_cast<double>(t.ego.size());
   const WindowConfig& wc = sc.window;
   const double window_m = wc.inner_ahead_m + wc.inner_behind_m + wc.outer_ahead_m + wc.outer_behind_m;
   std::unordered_map<std::uint32_t, std::pair<std::uint64_t, double>> last;  // id -> (step, s - s_ego)
@@ -165,9 +180,19 @@ PastTheEgo measure_past_ego(const Tables& t, const ScenarioConfig& sc) {
     auto it = last.find(r.id);
     if (it != last.end() && it->second.first + 1 == r.step) {
       const double before = it->second.second;
-      if (r.direction > 0 && before < 0.0 && rel >= 0.0) ++p.overtaking;
-      if (r.direction > 0 && before >= 0.0 && rel < 0.0) ++p.overtaken;
-      if (r.direction < 0 && before >= 0.0 && rel < 0.0) ++p.met;
+      const bool counted = counted_steps.count(r.step) > 0;
+      if (r.direction > 0 && before < 0.0 && rel >= 0.0) {
+        ++p.overtaking;
+        if (counted) ++p.overtaking_counted;
+      }
+      if (r.direction > 0 && before >= 0.0 && rel < 0.0) {
+        ++p.overtaken;
+        if (counted) ++p.overtaken_counted;
+      }
+      if (r.direction < 0 && before >= 0.0 && rel < 0.0) {
+        ++p.met;
+        if (counted) ++p.met_counted;
+      }
     }
     last[r.id] = {r.step, rel};
   }
@@ -192,6 +217,7 @@ PastTheEgoPrediction predict_past_ego(const Tables& t, const ScenarioConfig& sc)
   const ObservedStream backward(sc, Direction::kBackward, StreamObservation{},
                                 observation_seed(seed, Direction::kBackward));
   for (const auto& e : t.ego) {
+    if (!counts_catch_ups(sc, e.s_m)) continue;
     const double u = std::max(0.0, e.speed_mps);
     p.overtaking += forward.vehicles_rear_per_s(u) * sc.step_s;
     p.overtaken += forward.vehicles_front_per_s(u) * sc.step_s;

@@ -77,6 +77,13 @@ struct PastTheEgo {
   std::uint64_t overtaking = 0;  // passive catch-ups: vehicles of its direction passing the ego
   std::uint64_t overtaken = 0;   // active catch-ups: vehicles the ego passes
   std::uint64_t met = 0;         // oncoming vehicles met
+  // The same, counted only at the steps when the whole window was on a stretch like the reference
+  // road the prediction's stream is observed on (traffic/road_sim.hpp: like_reference_road), and
+  // the share of the steps that were.
+  std::uint64_t overtaking_counted = 0;
+  std::uint64_t overtaken_counted = 0;
+  std::uint64_t met_counted = 0;
+  double counted_share = 0.0;
   double forward_veh_per_h = 0.0;
   double backward_veh_per_h = 0.0;
 };
@@ -85,7 +92,9 @@ struct PastTheEgo {
 // demand's stream (as the run's generator observed it, with the seeds it derives from the run's
 // seed in t.info: traffic/observed_stream.hpp) at the ego's speed,
 // integrated over the ego's speed history: passive k E[(v - u)+], active k E[(u - v)+], oncoming
-// met k_o E[v + u], each in vehicles per second.
+// met k_o E[v + u], each in vehicles per second; at the steps PastTheEgo's *_counted are counted
+// at (the relations are those of the stream on a homogeneous road: a curve or a speed zone slows
+// the stream and the ego together).
 struct PastTheEgoPrediction {
   double overtaking = 0.0;
   double overtaken = 0.0;

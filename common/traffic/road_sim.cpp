@@ -32,6 +32,19 @@ ScenarioConfig road_sim_scenario(const ScenarioConfig& scenario, const RoadSimCo
   return c;
 }
 
+bool like_reference_road(const RoadConfig& road, double from_m, double to_m) {
+  const auto overlaps = [&](double start_m, double end_m) { return start_m <= to_m && end_m >= from_m; };
+  double at_m = 0.0;
+  for (const SegmentConfig& seg : road.segments) {
+    if (seg.curvature_per_m != 0.0 && overlaps(at_m, at_m + seg.length_m)) return false;
+    at_m += seg.length_m;
+  }
+  const auto any = [&](const auto& zones) {
+    return std::any_of(zones.begin(), zones.end(), [&](const auto& z) { return overlaps(z.start_m, z.end_m); });
+  };
+  return !any(road.speed_zones) && !any(road.no_overtaking) && !any(road.lane_closures);
+}
+
 RoadSim::RoadSim(const ScenarioConfig& scenario, RoadSimConfig config, std::uint64_t seed)
     : scenario_(road_sim_scenario(scenario, config)),
       config_(std::move(config)),

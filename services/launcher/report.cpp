@@ -89,10 +89,12 @@ bool print_report(const ReportInput& in, const recording::Tables& tables, std::o
   };
   // A count's chance spread: Poisson's root of the prediction (at least: platoons pass together).
   const auto predicted = [](double expected) { return f1(expected) + " ± " + f1(std::sqrt(std::max(expected, 0.0))); };
-  out << "  catch-ups against the moving-observer prediction: passive " << pe.overtaking << " / "
-      << predicted(pp.overtaking) << " (" << ratio(pe.overtaking, pp.overtaking) << "), active " << pe.overtaken
-      << " / " << predicted(pp.overtaken) << " (" << ratio(pe.overtaken, pp.overtaken) << "), oncoming met " << pe.met
-      << " / " << predicted(pp.met) << " (" << ratio(pe.met, pp.met) << ")\n";
+  out << "  catch-ups against the moving-observer prediction: passive " << pe.overtaking_counted << " / "
+      << predicted(pp.overtaking) << " (" << ratio(pe.overtaking_counted, pp.overtaking) << "), active "
+      << pe.overtaken_counted << " / " << predicted(pp.overtaken) << " (" << ratio(pe.overtaken_counted, pp.overtaken)
+      << "), oncoming met " << pe.met_counted << " / " << predicted(pp.met) << " (" << ratio(pe.met_counted, pp.met)
+      << "); counted in " << f1(100.0 * pe.counted_share) << " % of the steps (the window on a stretch like the "
+      << "reference road)\n";
   for (const auto& [name, f, lanes] :
        {std::tuple<const char*, const recording::FlowMeasurement&, int>{"forward", s.forward, in.scenario.road.lanes_forward},
         {"backward", s.backward, in.scenario.road.lanes_backward}}) {

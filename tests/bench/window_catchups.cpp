@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "core/units.hpp"
+#include "traffic/road_sim.hpp"
 #include "window_cores.hpp"
 
 namespace entourage::bench {
@@ -26,10 +27,13 @@ double window_length_m(const WindowConfig& w) {
 }
 bool in_window(double rel_m, const WindowBounds& b) { return rel_m >= b.rear_edge_m && rel_m < b.front_edge_m; }
 
-void observe_step(Tally& t, double speed_mps, const ObservedStream& stream, double dt) {
+void observe_step(Tally& t, double speed_mps, const ObservedStream& stream, double dt, bool counted) {
   const double u = std::max(0.0, speed_mps);
-  t.predicted_passive += stream.vehicles_rear_per_s(u) * dt;
-  t.predicted_active += stream.vehicles_front_per_s(u) * dt;
+  if (counted) {
+    t.predicted_passive += stream.vehicles_rear_per_s(u) * dt;
+    t.predicted_active += stream.vehicles_front_per_s(u) * dt;
+    t.counted_s += dt;
+  }
   t.observed_s += dt;
   t.distance_m += u * dt;
 }
@@ -85,19 +89,20 @@ Tally window_drive(const ScenarioConfig& sc, std::uint64_t seed, double duration
       if (v.direction == Direction::kForward) forward.insert(v.id);
     }
     if (k >= kFillSteps) {
-      observe_step(t, in.ego.speed_mps, stream, sc.step_s);
-      t.predicted_met += oncoming.vehicles_oncoming_per_s(std::max(0.0, in.ego.speed_mps)) * sc.step_s;
+      const bool counted = like_reference_road(sc.road, in.ego.s_m + w.rear_edge_m, in.ego.s_m + w.front_edge_m);
+      observe_step(t, in.ego.speed_mps, stream, sc.step_s, counted);
+      if (counted) t.predicted_met += oncoming.vehicles_oncoming_per_s(std::max(0.0, in.ego.speed_mps)) * sc.step_s;
       for (const ObservedVehicle& v : cores.world()) {
         const auto b = before.find(v.id);
         const bool was = b != before.end();
         const double rel = now[v.id];
         if (v.direction == Direction::kBackward) {
-          if (was && b->second >= 0.0 && rel < 0.0) t.met += 1.0;
+          if (counted && was && b->second >= 0.0 && rel < 0.0) t.met += 1.0;
           if (in_window(rel, w)) t.oncoming_metres += v.speed_mps * sc.step_s;
           continue;
         }
-        if (was && b->second < 0.0 && rel >= 0.0) t.passive += 1.0;
-        if (was && b->second >= 0.0 && rel < 0.0) t.active += 1.0;
+        if (counted && was && b->second < 0.0 && rel >= 0.0) t.passive += 1.0;
+        if (counted && was && b->second >= 0.0 && rel < 0.0) t.active += 1.0;
         observe_in_window(t, was ? b->second : std::nan(""), rel, v.speed_mps, w, sc.step_s);
       }
       for (const auto& [id, rel] : before) {

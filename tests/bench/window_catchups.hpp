@@ -25,6 +25,9 @@ struct Tally {
   double predicted_active = 0.0;
   double observed_s = 0.0;
   double distance_m = 0.0;
+  // Of observed_s, the time the catch-ups (observed and predicted) were counted: while the window
+  // around the observer was like the reference road (traffic/road_sim.hpp: like_reference_road).
+  double counted_s = 0.0;
   // Vehicles of its direction crossing the points where its window's edges are: in and out at
   // the rear, in and out at the front (a vehicle born or retired inside counts as crossing).
   double rear_in = 0.0;
@@ -50,6 +53,7 @@ struct Tally {
     predicted_active += t.predicted_active;
     observed_s += t.observed_s;
     distance_m += t.distance_m;
+    counted_s += t.counted_s;
     rear_in += t.rear_in;
     rear_out += t.rear_out;
     front_in += t.front_in;
@@ -76,8 +80,9 @@ WindowBounds relative_window(const WindowConfig& w);
 double window_length_m(const WindowConfig& w);
 bool in_window(double rel_m, const WindowBounds& b);
 
-// The observer's own step: its speed against the stream's moving-observer rates.
-void observe_step(Tally& t, double speed_mps, const ObservedStream& stream, double dt);
+// The observer's own step: its speed against the stream's moving-observer rates, these only if
+// the step's catch-ups are `counted`.
+void observe_step(Tally& t, double speed_mps, const ObservedStream& stream, double dt, bool counted = true);
 
 // Another vehicle of its direction in the observer's window, `rel_m` ahead of it now (behind if
 // negative) and `before_m` the step before (NaN: not there then).
@@ -93,7 +98,7 @@ inline constexpr Step kFillSteps = 10;
 // One drive of the window: the ego stand-in counted as the recording's summary counts it (a vehicle
 // of its direction whose position relative to the ego changes sign between two steps; an oncoming
 // one is met when its position does), the same prediction, from the streams the drive's generator
-// observed.
+// observed; both only at the steps when the whole window is on a stretch like the reference road.
 Tally window_drive(const ScenarioConfig& sc, std::uint64_t seed, double duration_s);
 
 }  // namespace entourage::bench

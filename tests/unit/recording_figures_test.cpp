@@ -11,6 +11,7 @@
 #include "recording/tables.hpp"
 #include "recording/transitions.hpp"
 #include "traffic/observed_stream.hpp"
+#include "traffic/road_sim.hpp"
 
 // The catch-up prediction for a recording: a standing ego is passed by the whole flow and passes
 // nobody; oncoming, it meets the whole oncoming flow. At the stream's mean speed it overtakes and is
@@ -54,6 +55,51 @@ TEST(PastTheEgoPrediction, UsesTheStreamTheRunsGeneratorObserved) {
   EXPECT_NEAR(p.overtaking, forward.vehicles_rear_per_s(u) * seconds, 1e-6 * p.overtaking);
   EXPECT_NEAR(p.overtaken, forward.vehicles_front_per_s(u) * seconds, 1e-6 * p.overtaken);
   EXPECT_NEAR(p.met, backward.vehicles_oncoming_per_s(u) * seconds, 1e-6 * p.met);
+}
+
+// The relations are those of the stream on the reference road (straight, no zones): where the
+// window reaches a speed zone (or a curve, an overtaking restriction, a closure) a catch-up is
+// counted as a catch-up but not against the prediction, and the prediction skips those steps too.
+TEST(PastTheEgoPrediction, CountsOnlyWhereTheWindowIsOnAStretchLikeTheReferenceRoad) {
+  ScenarioConfig sc = entourage::testing::freeway_scenario();
+  sc.road.speed_zones.push_back({5000.0, 5500.0, 22.0});
+  const auto drive_at = [&](double ego_s_m) {
+    Tables t = ego_driving(25.0, 2);
+    for (EgoRow& e : t.ego) e.s_m = ego_s_m;
+    for (std::uint64_t step : {0u, 1u}) {  // a vehicle passes the ego between the steps
+      VehicleRow r;
+      r.step = step;
+      r.id = 7;
+      r.region = "inner";
+      r.s_m = ego_s_m + (step == 0 ? -1.0 : 1.0);
+      t.vehicles.push_back(r);
+    }
+    return t;
+  };
+  const Tables far = drive_at(1000.0);  // the window reaches 1000 m ahead at most
+  const Tables near = drive_at(4500.0);
+  EXPECT_EQ(measure_past_ego(far, sc).overtaking_counted, 1u);
+  EXPECT_DOUBLE_EQ(measure_past_ego(far, sc).counted_share, 1.0);
+  EXPECT_GT(predict_past_ego(far, sc).overtaking, 0.0);
+  EXPECT_EQ(measure_past_ego(near, sc).overtaking, 1u);
+  EXPECT_EQ(measure_past_ego(near, sc).overtaking_counted, 0u);
+  EXPECT_DOUBLE_EQ(measure_past_ego(near, sc).counted_share, 0.0);
+  EXPECT_EQ(predict_past_ego(near, sc).overtaking, 0.0);
+}
+
+TEST(LikeReferenceRoad, OnlyAStraightStretchWithoutZonesRestrictionsOrClosures) {
+  RoadConfig road;
+  road.segments = {{1000.0, 0.0}, {500.0, 0.002}, {1000.0, 0.0}};
+  road.speed_zones.push_back({4000.0, 4500.0, 20.0});
+  road.no_overtaking.push_back({6000.0, 6500.0});
+  road.lane_closures.push_back({Direction::kForward, 0, 8000.0, 8500.0});
+  EXPECT_TRUE(like_reference_road(road, 0.0, 900.0));
+  EXPECT_FALSE(like_reference_road(road, 900.0, 1100.0));   // into the curve
+  EXPECT_TRUE(like_reference_road(road, 1600.0, 3900.0));   // past it, beyond the last segment too
+  EXPECT_FALSE(like_reference_road(road, 4400.0, 5000.0));  // the speed zone
+  EXPECT_FALSE(like_reference_road(road, 5500.0, 6100.0));  // the overtaking restriction
+  EXPECT_FALSE(like_reference_road(road, 8400.0, 9000.0));  // the closure
+  EXPECT_TRUE(like_reference_road(road, 8600.0, 9600.0));
 }
 
 TEST(PastTheEgoPrediction, FasterEgosOvertakeMoreAndAreOvertakenLess) {
