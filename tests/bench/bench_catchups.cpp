@@ -22,8 +22,12 @@
 //
 // With --probe-kph the window drives' ego is a transparent probe at that speed (scenario
 // ego.transparent: nobody sees it, it sees nobody), the observer the moving-observer relations are
-// made for: its catch-ups test the window's stream itself against the prediction, and no whole road
-// is simulated.
+// made for: its catch-ups test the window's stream itself against the prediction; the whole road
+// then carries transparent probes at the same speed instead of the ego stand-in's drivers (their
+// crossings against the same prediction, and against the relations applied to the vehicles around
+// them). The window's catch-ups are counted, observed and predicted, only while the whole window
+// is on a stretch like the reference road the stream was observed on (straight, no speed zone,
+// no overtaking restriction, no closure: window_catchups.hpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -82,10 +86,33 @@ std::string group_of(const ScenarioConfig& sc, const Vehicle& v) {
   return band;
 }
 
+// A transparent probe on the whole road: a point at a set speed that nobody sees, started at the
+// first margin every kProbeEvery_s after the warm-up and counting until the second margin; the
+// vehicles of its direction within kProbeReach_m of it, ahead of it or not at the last step.
+struct RoadProbe {
+  double s_m = 0.0;
+  Tally tally;
+  std::unordered_map<VehicleId, bool> ahead;
+  double local_passive = 0.0;  // the moving-observer rates of the vehicles around it, integrated
+  double local_active = 0.0;
+};
+struct ProbeResult {
+  Tally tally;
+  double local_passive = 0.0;
+  double local_active = 0.0;
+};
+constexpr double kProbeEvery_s = 20.0;
+constexpr double kProbeReach_m = 300.0;  // beyond the 4 m a step any relative speed moves
+
 // The whole road: every forward vehicle an observer while it is between the margins (after the
 // warm-up), crossings found by keeping the vehicles sorted by position (each swap of an insertion
-// sort is one vehicle passing another). The ego drivers also track their window's edges.
-std::unordered_map<VehicleId, Observer> observe_whole_road(const ScenarioConfig& sc, const Options& o) {
+// sort is one vehicle passing another). The ego drivers also track their window's edges. With a
+// probe speed (> 0), transparent probes at that speed count their crossings too (`probes`), with
+// the moving-observer relations applied to the vehicles around them at each step (local_*: the
+// relations hold where the stream is what the probe meets, whatever the stream observed at
+// startup predicts).
+std::unordered_map<VehicleId, Observer> observe_whole_road(const ScenarioConfig& sc, const Options& o,
+                                                           std::vector<ProbeResult>* probes = nullptr) {
   RoadSimConfig rc;
   rc.length_m = o.length_m;
   RoadSim sim(road_sim_scenario(sc, rc), Direction::kForward, rc, static_cast<std::uint64_t>(o.seed));
@@ -100,6 +127,9 @@ std::unordered_map<VehicleId, Observer> observe_whole_road(const ScenarioConfig&
   const auto s_of = [&](VehicleId id) { return on_road.at(id)->s_m; };
   const auto counting = [&](double s) { return sim.time_s() >= o.warmup_s && s >= o.margin_m && s < o.length_m - o.margin_m; };
   int cars = 0;
+  const double probe_mps = kph_to_mps(o.probe_kph);
+  std::vector<RoadProbe> running;
+  double next_probe_s = o.warmup_s;
   const auto steps = static_cast<long>((o.warmup_s + o.duration_s) / dt);
   for (long i = 0; i < steps; ++i) {
     sim.step();
@@ -111,7 +141,7 @@ std::unordered_map<VehicleId, Observer> observe_whole_road(const ScenarioConfig&
       if (fresh) {
         it->second.group = group_of(sc, v);
         order.insert(order.begin(), v.id);  // a new vehicle enters at the rear
-        if (!sc.vehicle_types[v.type_index].keep_right && ++cars % o.ego_every == 0) {
+        if (probes == nullptr && !sc.vehicle_types[v.type_index].keep_right && ++cars % o.ego_every == 0) {
           sim.redrive(v.id, ego::ego_driver(sc.ego, sim.environment(), static_cast<std::uint64_t>(cars)));
           it->second.group = "the ego stand-in's driver";
           it->second.ego_driver = true;
@@ -131,6 +161,35 @@ std::unordered_map<VehicleId, Observer> observe_whole_road(const ScenarioConfig&
         if (counting(s_of(passer))) observers[passer].tally.active += 1.0;
         std::swap(order[k], order[k - 1]);
       }
+    }
+    if (probes != nullptr && probe_mps > 0.0) {
+      if (sim.time_s() >= next_probe_s) {
+        running.push_back({o.margin_m, {}, {}});
+        next_probe_s += kProbeEvery_s;
+      }
+      for (RoadProbe& p : running) {
+        p.s_m += probe_mps * dt;
+        observe_step(p.tally, probe_mps, stream, dt);
+        std::unordered_map<VehicleId, bool> now;
+        auto first = std::lower_bound(order.begin(), order.end(), p.s_m - kProbeReach_m,
+                                      [&](VehicleId v, double x) { return s_of(v) < x; });
+        for (auto v = first; v != order.end() && s_of(*v) < p.s_m + kProbeReach_m; ++v) {
+          const bool is_ahead = s_of(*v) >= p.s_m;
+          const double rel_speed = on_road.at(*v)->speed_mps - probe_mps;
+          (rel_speed > 0.0 ? p.local_passive : p.local_active) += std::abs(rel_speed) * dt / (2.0 * kProbeReach_m);
+          now[*v] = is_ahead;
+          const auto b = p.ahead.find(*v);
+          if (b == p.ahead.end()) continue;
+          if (!b->second && is_ahead) p.tally.passive += 1.0;
+          if (b->second && !is_ahead) p.tally.active += 1.0;
+        }
+        p.ahead = std::move(now);
+      }
+      const auto done = [&](const RoadProbe& p) { return p.s_m >= o.length_m - o.margin_m; };
+      for (const RoadProbe& p : running) {
+        if (done(p)) probes->push_back({p.tally, p.local_passive, p.local_active});
+      }
+      running.erase(std::remove_if(running.begin(), running.end(), done), running.end());
     }
     for (const VehicleId id : ego_drivers) {
       Observer& ob = observers[id];
@@ -206,14 +265,16 @@ void print_ego(const char* label, const Pooled& p, const ScenarioConfig& sc, con
   const Ratio active = pooled_ratio(p.active);
   const WindowConfig& w = sc.window;
   const double h = t.observed_s / 3600.0;
+  const double counted_h = std::max(t.counted_s, 1e-9) / 3600.0;  // the rates as predicted where counted
   std::printf("%s: %zu, %.0f km at %.1f km/h\n", label, p.passive.size(), t.distance_m / 1000.0,
               mps_to_kph(t.distance_m / t.observed_s));
-  std::printf("  catch-ups against the moving-observer prediction: passive %.2f +- %.2f, active %.2f +- %.2f\n",
-              passive.value, passive.error, active.value, active.error);
+  std::printf("  catch-ups against the moving-observer prediction: passive %.2f +- %.2f, active %.2f +- %.2f (counted in "
+              "%.0f %% of the time: the window on a stretch like the reference road)\n",
+              passive.value, passive.error, active.value, active.error, 100.0 * t.counted_s / t.observed_s);
   std::printf("  per hour at the rear edge: in %.1f, out %.1f (moving-observer rate %.1f); at the front edge: in "
               "%.1f, out %.1f (rate %.1f)\n",
-              t.rear_in / h, t.rear_out / h, t.predicted_passive / h, t.front_in / h, t.front_out / h,
-              t.predicted_active / h);
+              t.rear_in / h, t.rear_out / h, t.predicted_passive / counted_h, t.front_in / h, t.front_out / h,
+              t.predicted_active / counted_h);
   const double inner = (t.vehicle_seconds - t.rear_outer_seconds - t.front_outer_seconds) / t.observed_s;
   std::printf("  vehicles of its direction in the window: %.1f (outer behind %.1f, inner %.1f, outer ahead %.1f; the "
               "stream's density gives %.1f, %.1f, %.1f)\n",
@@ -269,7 +330,7 @@ int main(int argc, char** argv) {
   args.option("drives", "N", "window drives, seeds 1..N (default 0)", &o.drives);
   args.option("drive-duration", "S", "simulated time of each window drive (default 1800)", &o.drive_s);
   args.option("probe-kph", "KPH", "the window drives' ego is a transparent probe (scenario ego.transparent) at this "
-              "speed, and no whole road is simulated: the moving-observer prediction itself is the reference "
+              "speed, and the whole road carries transparent probes at it instead of the ego stand-in's drivers "
               "(default: the scenario's ego stand-in)", &o.probe_kph);
   if (const auto rc = args.parse_or_exit(argc, argv)) return *rc;
   if (const int rc = check_options(o)) return rc;
@@ -300,6 +361,29 @@ int main(int argc, char** argv) {
     }
     for (const auto& [label, g] : groups) print_group(label, g.first, g.second);
     print_ego("the ego stand-in's drivers on the whole road", road_egos, sc, stream);
+  }
+  if (o.probe_kph > 0.0) {
+    std::printf("whole road: %s demand, %.0f km straight road, seed %d, %.0f s counted after %.0f s: transparent "
+                "probes at %.0f km/h, one every %.0f s, each from %.0f to %.0f m\n",
+                sc.name.c_str(), o.length_m / 1000.0, o.seed, o.duration_s, o.warmup_s, o.probe_kph, kProbeEvery_s,
+                o.margin_m, o.length_m - o.margin_m);
+    std::vector<ProbeResult> probes;
+    observe_whole_road(sc, o, &probes);
+    Pooled pooled;
+    double local_passive = 0.0;
+    double local_active = 0.0;
+    for (const ProbeResult& r : probes) {
+      pooled.add(r.tally);
+      local_passive += r.local_passive;
+      local_active += r.local_active;
+    }
+    const Ratio p = pooled_ratio(pooled.passive);
+    const Ratio a = pooled_ratio(pooled.active);
+    std::printf("  %zu probes, %.0f km: passive %.0f of %.1f predicted (%.2f +- %.2f), active %.0f of %.1f (%.2f +- %.2f)\n",
+                probes.size(), pooled.total.distance_m / 1000.0, pooled.total.passive, pooled.total.predicted_passive,
+                p.value, p.error, pooled.total.active, pooled.total.predicted_active, a.value, a.error);
+    std::printf("  the relations over the vehicles around the probes (within %.0f m) give passive %.1f, active %.1f\n",
+                kProbeReach_m, local_passive, local_active);
   }
   if (o.drives == 0) return 0;
   const ScenarioConfig drive_sc = o.probe_kph > 0.0 ? with_probe(sc, o.probe_kph) : sc;
