@@ -148,39 +148,35 @@ FlowMeasurement measure_flow(const Tables& t, const ScenarioConfig& sc, int dire
   return f;
 }
 
-namespace {
-// Whether the catch-ups of an ego at `ego_s_m` count against the prediction: its whole window on a
-// stretch like the reference road.
-bool counts_catch_ups(const ScenarioConfig& sc, double ego_s_m) {
-  const WindowBounds w = WindowBounds::around(ego_s_m, sc.window);
-  return like_reference_road(sc.road, w.rear_edge_m, w.front_edge_m);
-}
-}  // namespace
-
 PastTheEgo measure_past_ego(const Tables& t, const ScenarioConfig& sc) {
   PastTheEgo p;
   if (t.ego.size() < 2) return p;
-  std::unordered_map<std::uint64_t, double> ego_s;
-  std::unordered_set<std::uint64_t> counted_steps;
+  struct EgoAt {
+    double s_m;
+    bool counted;  // its catch-ups count against the prediction
+  };
+  std::unordered_map<std::uint64_t, EgoAt> ego_at;
+  double counted_steps = 0.0;
   for (const auto& e : t.ego) {
-    ego_s[e.step] = e.s_m;
-    if (counts_catch_ups(sc, e.s_m)) counted_steps.insert(e.step);
+    const bool counted = window_like_reference_road(sc, e.s_m);
+    ego_at[e.step] = {e.s_m, counted};
+    if (counted) counted_steps += 1.0;
   }
-  p.counted_share = static_cast<double>(counted_steps.size()) / static_cast<double>(t.ego.size());
+  p.counted_share = counted_steps / static_cast<double>(t.ego.size());
   const WindowConfig& wc = sc.window;
   const double window_m = wc.inner_ahead_m + wc.inner_behind_m + wc.outer_ahead_m + wc.outer_behind_m;
   std::unordered_map<std::uint32_t, std::pair<std::uint64_t, double>> last;  // id -> (step, s - s_ego)
   double forward_vehicle_steps = 0.0;
   double backward_vehicle_steps = 0.0;
   for (const VehicleRow& r : t.vehicles) {
-    auto e = ego_s.find(r.step);
-    if (e == ego_s.end() || r.region == "outside") continue;
-    const double rel = r.s_m - e->second;
+    auto e = ego_at.find(r.step);
+    if (e == ego_at.end() || r.region == "outside") continue;
+    const double rel = r.s_m - e->second.s_m;
     (r.direction > 0 ? forward_vehicle_steps : backward_vehicle_steps) += 1.0;
     auto it = last.find(r.id);
     if (it != last.end() && it->second.first + 1 == r.step) {
       const double before = it->second.second;
-      const bool counted = counted_steps.count(r.step) > 0;
+      const bool counted = e->second.counted;
       if (r.direction > 0 && before < 0.0 && rel >= 0.0) {
         ++p.overtaking;
         if (counted) ++p.overtaking_counted;
@@ -217,7 +213,7 @@ PastTheEgoPrediction predict_past_ego(const Tables& t, const ScenarioConfig& sc)
   const ObservedStream backward(sc, Direction::kBackward, StreamObservation{},
                                 observation_seed(seed, Direction::kBackward));
   for (const auto& e : t.ego) {
-    if (!counts_catch_ups(sc, e.s_m)) continue;
+    if (!window_like_reference_road(sc, e.s_m)) continue;
     const double u = std::max(0.0, e.speed_mps);
     p.overtaking += forward.vehicles_rear_per_s(u) * sc.step_s;
     p.overtaken += forward.vehicles_front_per_s(u) * sc.step_s;

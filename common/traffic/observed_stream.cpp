@@ -63,13 +63,13 @@ ObservedStream::ObservedStream(const ScenarioConfig& scenario, Direction dir, co
     next_snapshot += how.snapshot_every_s;
     std::vector<StreamVehicle> snap;
     for (const Vehicle& v : sim.fleet().vehicles()) {
-      // Vehicles in the middle of an overtaking are left out: a window cannot start with a
-      // vehicle beside the one it passes (the stream loses a fraction of a percent).
       if (v.direction != dir) continue;
       const double along_m = dir == Direction::kForward ? v.s_m : how.road_length_m - v.s_m;
       if (along_m < how.settled_from_m || along_m >= how.road_length_m) continue;
       crossing_speeds_.add(v.speed_mps);
       carried_by_all += v.speed_mps;
+      // Vehicles in the middle of an overtaking are left out of the snapshots (not of the rates): a
+      // window cannot start with a vehicle beside the one it passes.
       if (v.overtaking.active() || v.lane >= lanes) continue;
       snap.push_back({along_m - how.settled_from_m, v});
     }

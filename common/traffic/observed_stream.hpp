@@ -142,10 +142,10 @@ class ObservedStream {
   // filled from, not out of the stream): a probe at 85 km/h on a straight rural road is passed by
   // them a quarter of the times it is passed (stop 40, entourage-bench-catchups on a whole road).
   double vehicles_rear_per_s(double window_speed_mps) const;
-  // The share of the stream's vehicles that were in the middle of an overtaking when observed.
-  double passing_share() const;
   double vehicles_front_per_s(double window_speed_mps) const;
   double vehicles_oncoming_per_s(double window_speed_mps) const;
+  // The share of the stream's vehicles that were in the middle of an overtaking when observed.
+  double passing_share() const;
   const Platoon& draw_rear(Random& rng, double window_speed_mps) const;
   const Platoon& draw_front(Random& rng, double window_speed_mps) const;
   const Platoon& draw_oncoming(Random& rng, double window_speed_mps) const;

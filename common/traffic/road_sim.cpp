@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "road/window.hpp"
+
 #include "traffic/driver_draw.hpp"
 #include "traffic/entry.hpp"
 
@@ -43,6 +45,11 @@ bool like_reference_road(const RoadConfig& road, double from_m, double to_m) {
     return std::any_of(zones.begin(), zones.end(), [&](const auto& z) { return overlaps(z.start_m, z.end_m); });
   };
   return !any(road.speed_zones) && !any(road.no_overtaking) && !any(road.lane_closures);
+}
+
+bool window_like_reference_road(const ScenarioConfig& scenario, double ego_s_m) {
+  const WindowBounds w = WindowBounds::around(ego_s_m, scenario.window);
+  return like_reference_road(scenario.road, w.rear_edge_m, w.front_edge_m);
 }
 
 RoadSim::RoadSim(const ScenarioConfig& scenario, RoadSimConfig config, std::uint64_t seed)

@@ -147,4 +147,8 @@ ScenarioConfig road_sim_scenario(const ScenarioConfig& scenario, const RoadSimCo
 // stop 40).
 bool like_reference_road(const RoadConfig& road, double from_m, double to_m);
 
+// Whether the whole window around an ego at `ego_s_m` is on such a stretch: the steps at which its
+// catch-ups count against the prediction (recording/summary.hpp, the catch-up benches).
+bool window_like_reference_road(const ScenarioConfig& scenario, double ego_s_m);
+
 }  // namespace entourage

@@ -89,17 +89,15 @@ std::string group_of(const ScenarioConfig& sc, const Vehicle& v) {
 // A transparent probe on the whole road: a point at a set speed that nobody sees, started at the
 // first margin every kProbeEvery_s after the warm-up and counting until the second margin; the
 // vehicles of its direction within kProbeReach_m of it, ahead of it or not at the last step.
-struct RoadProbe {
-  double s_m = 0.0;
+struct ProbeResult {
   Tally tally;
-  std::unordered_map<VehicleId, bool> ahead;
   double local_passive = 0.0;  // the moving-observer rates of the vehicles around it, integrated
   double local_active = 0.0;
 };
-struct ProbeResult {
-  Tally tally;
-  double local_passive = 0.0;
-  double local_active = 0.0;
+struct RoadProbe {
+  double s_m = 0.0;
+  std::unordered_map<VehicleId, bool> ahead;
+  ProbeResult result;
 };
 constexpr double kProbeEvery_s = 20.0;
 constexpr double kProbeReach_m = 300.0;  // beyond the 4 m a step any relative speed moves
@@ -169,25 +167,25 @@ std::unordered_map<VehicleId, Observer> observe_whole_road(const ScenarioConfig&
       }
       for (RoadProbe& p : running) {
         p.s_m += probe_mps * dt;
-        observe_step(p.tally, probe_mps, stream, dt);
+        observe_step(p.result.tally, probe_mps, stream, dt);
         std::unordered_map<VehicleId, bool> now;
         auto first = std::lower_bound(order.begin(), order.end(), p.s_m - kProbeReach_m,
                                       [&](VehicleId v, double x) { return s_of(v) < x; });
         for (auto v = first; v != order.end() && s_of(*v) < p.s_m + kProbeReach_m; ++v) {
           const bool is_ahead = s_of(*v) >= p.s_m;
           const double rel_speed = on_road.at(*v)->speed_mps - probe_mps;
-          (rel_speed > 0.0 ? p.local_passive : p.local_active) += std::abs(rel_speed) * dt / (2.0 * kProbeReach_m);
+          (rel_speed > 0.0 ? p.result.local_passive : p.result.local_active) += std::abs(rel_speed) * dt / (2.0 * kProbeReach_m);
           now[*v] = is_ahead;
           const auto b = p.ahead.find(*v);
           if (b == p.ahead.end()) continue;
-          if (!b->second && is_ahead) p.tally.passive += 1.0;
-          if (b->second && !is_ahead) p.tally.active += 1.0;
+          if (!b->second && is_ahead) p.result.tally.passive += 1.0;
+          if (b->second && !is_ahead) p.result.tally.active += 1.0;
         }
         p.ahead = std::move(now);
       }
       const auto done = [&](const RoadProbe& p) { return p.s_m >= o.length_m - o.margin_m; };
       for (const RoadProbe& p : running) {
-        if (done(p)) probes->push_back({p.tally, p.local_passive, p.local_active});
+        if (done(p)) probes->push_back(p.result);
       }
       running.erase(std::remove_if(running.begin(), running.end(), done), running.end());
     }

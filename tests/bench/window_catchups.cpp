@@ -89,7 +89,7 @@ Tally window_drive(const ScenarioConfig& sc, std::uint64_t seed, double duration
       if (v.direction == Direction::kForward) forward.insert(v.id);
     }
     if (k >= kFillSteps) {
-      const bool counted = like_reference_road(sc.road, in.ego.s_m + w.rear_edge_m, in.ego.s_m + w.front_edge_m);
+      const bool counted = window_like_reference_road(sc, in.ego.s_m);
       observe_step(t, in.ego.speed_mps, stream, sc.step_s, counted);
       if (counted) t.predicted_met += oncoming.vehicles_oncoming_per_s(std::max(0.0, in.ego.speed_mps)) * sc.step_s;
       for (const ObservedVehicle& v : cores.world()) {
