@@ -64,7 +64,7 @@ void set_control(M& m, const ActorControl& c) {
   m.indicator(c.indicator);
 }
 
-constexpr int kMaxControlMode = static_cast<int>(ControlMode::kReleasing);
+constexpr int kMaxControlMode = static_cast<int>(ControlMode::kWithdrawn);
 constexpr int kMaxIndicator = 2;               // 0 off, 1 left, 2 right
 constexpr double kMaxControlRate_mps2 = 15.0;  // a controlled actor's acceleration and deceleration
 constexpr int kMaxControlLane = 15;            // lane index in the vehicle's own direction

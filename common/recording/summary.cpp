@@ -254,6 +254,7 @@ RunSummary summarize(const Tables& t, const ScenarioConfig& sc, double spacing) 
       if (h.reason == to_string(HandoffReason::kInitialFill)) ++s.initial_fill;
     } else if (h.to_role == "none") {
       ++s.removed;
+      if (h.reason == to_string(HandoffReason::kDirector)) ++s.taken_off;
     } else {
       ++s.transfers;
     }

@@ -117,7 +117,8 @@ struct RunSummary {
   double simulated_s = 0.0;
   std::uint64_t generated = 0;     // births and initial fill
   std::uint64_t initial_fill = 0;
-  std::uint64_t removed = 0;       // retired beyond the window's edges
+  std::uint64_t removed = 0;       // retired beyond the window's edges, or taken off by the director
+  std::uint64_t taken_off = 0;     // of them, taken off out of sight by the director (a gap in the oncoming traffic)
   std::uint64_t transfers = 0;     // handoffs between regions
   std::uint64_t vehicle_samples = 0;
   std::map<std::string, double> mean_speed_mps;     // per region name

@@ -262,6 +262,7 @@ DirectorConfig resolve_director(const Director& d) {
   c.hidden_margin_m = d.hidden_margin_m();
   c.beside_wait_ahead_m = d.beside_wait_ahead_m();
   c.beside_approach_s = d.beside_approach_s();
+  c.oncoming_gap_m = d.oncoming_gap_m();
   return c;
 }
 

@@ -360,6 +360,7 @@ void check_director(const Cursor& top, const Scenario& s) {
   c.range("hidden_margin_m", d.hidden_margin_m(), 0.0, 10000.0, true);
   c.range("beside_wait_ahead_m", d.beside_wait_ahead_m(), -1000.0, 1000.0);
   c.range("beside_approach_s", d.beside_approach_s(), 0.0, 120.0, true);
+  c.range("oncoming_gap_m", d.oncoming_gap_m(), 0.0, 100000.0);
 }
 
 }  // namespace entourage::scenario::detail

@@ -8,6 +8,7 @@ const char* to_string(ControlMode m) {
     case ControlMode::kTransported: return "transported";
     case ControlMode::kControlled: return "controlled";
     case ControlMode::kReleasing: return "releasing";
+    case ControlMode::kWithdrawn: return "withdrawn";
   }
   return "unknown";
 }

@@ -13,6 +13,10 @@
 //                (a scripted cut-in), only refused when the target lane is physically occupied
 //   releasing    back to everyday driving: the driver's own model, acceleration rising no faster
 //                than max_jerk_mps3
+//   withdrawn    taken off the road by its owner where the driver cannot see it (beyond the
+//                inner region; a gap the director opens in the oncoming traffic, director
+//                README *A gap in the oncoming traffic*); where it can be seen, it drives on as
+//                everyday traffic
 // A control travels with the vehicle in every handoff, so an actor keeps its part across regions.
 
 #include <cstdint>
@@ -21,7 +25,13 @@
 
 namespace entourage {
 
-enum class ControlMode : std::uint8_t { kAutonomous = 0, kTransported = 1, kControlled = 2, kReleasing = 3 };
+enum class ControlMode : std::uint8_t {
+  kAutonomous = 0,
+  kTransported = 1,
+  kControlled = 2,
+  kReleasing = 3,
+  kWithdrawn = 4,
+};
 
 // A transported vehicle's desired speed that leaves the driver's own (a vehicle only asked to
 // change or keep its lane: given its present speed instead, it would never speed up again).

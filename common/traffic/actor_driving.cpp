@@ -29,7 +29,7 @@ double easing_accel_mps2(const CarFollowingParams& cf, double speed_mps) {
 
 bool chooses_lanes_freely(const Vehicle& v) {
   const ControlMode m = v.control.mode;
-  return m == ControlMode::kAutonomous || m == ControlMode::kReleasing;
+  return m == ControlMode::kAutonomous || m == ControlMode::kReleasing || m == ControlMode::kWithdrawn;
 }
 
 int director_lane(const Vehicle& v) {

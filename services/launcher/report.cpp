@@ -70,7 +70,9 @@ bool print_report(const ReportInput& in, const recording::Tables& tables, std::o
         << " steps/s";
   }
   out << "\n  vehicles generated " << s.generated << " (" << s.initial_fill << " by the initial fill), removed "
-      << s.removed << ", handed between regions " << s.transfers << " times\n";
+      << s.removed;
+  if (s.taken_off > 0) out << " (" << s.taken_off << " of them taken off out of sight by the director)";
+  out << ", handed between regions " << s.transfers << " times\n";
   out << "  mean speed:";
   for (const char* region : {"outer_rear", "inner", "outer_front"}) {
     auto it = s.mean_speed_mps.find(region);

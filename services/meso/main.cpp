@@ -19,12 +19,12 @@ int meso_main(int argc, char** argv) {
         meso::MesoCore core(ctx.scenario.config, ctx.id);
         const int rc = dds::run_region_service(ctx, core);
         const meso::Counters& c = core.counters();
-        spdlog::info("vehicles adopted {}; handed to micro {}, to the other meso {}, to the front zone {}; retired {}; "
+        spdlog::info("vehicles adopted {}; handed to micro {}, to the other meso {}, to the front zone {}; retired {}, taken off by the director {}; "
                      "planned at {} of {} steps, {} vehicle plans ({} of alert vehicles between updates), "
                      "{} of them floor-gap emergencies; "
                      "mandatory lane changes {}, changes called off {}; overtakings started {}; "
                      "director commands applied {}; duplicate handoffs {}",
-                     c.adopted, c.to_micro, c.to_other_meso, c.to_front_zone, c.retired, c.planning_steps, c.steps,
+                     c.adopted, c.to_micro, c.to_other_meso, c.to_front_zone, c.retired, c.taken_off, c.planning_steps, c.steps,
                      c.plans, c.alert_plans, c.emergency_stops, c.mandatory_lane_changes, c.called_off_lane_changes,
                      c.overtakings_started, c.commands_applied, c.duplicate_handoffs);
         return rc;

@@ -102,6 +102,7 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
   std::vector<double> held_up;  // s, per run
   std::vector<double> pos, speed, est, a_beside, o_beside, slowed, waits, beyond;
   ExtremesOverRuns actors, cleared, autonomous;
+  int taken_off = 0, taken_off_in_view = 0;
   int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
   bench::SignalsCalledOff off_commanded, off_autonomous;
   bench::RightPasses right, right_undirected;
@@ -145,6 +146,8 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
     off_autonomous.add(r.called_off_autonomous);
     created += r.created;
     in_view += r.created_in_view;
+    taken_off += r.taken_off;
+    taken_off_in_view += r.taken_off_in_view;
     overlaps_actor += r.overlaps_with_actor;
     overlaps_other += r.overlaps_other;
     ego_contacts += r.ego_contacts_with_actor;
@@ -204,6 +207,8 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
               percentile(off_autonomous.signal_s, 0.5), percentile(off_autonomous.signal_s, 0.95),
               percentile(off_autonomous.signal_s, 1.0), off_autonomous.signal_s.size());
   std::printf("vehicles created               %d   of which inside the view: %d\n", created, in_view);
+  std::printf("vehicles taken off the road    %d   of which inside the view: %d   (oncoming, for a gap)\n", taken_off,
+              taken_off_in_view);
   std::printf("overlapping pairs              with an actor %d   autonomous only %d   ego touching an actor %d\n",
               overlaps_actor, overlaps_other, ego_contacts);
 }
@@ -310,11 +315,12 @@ int run(int argc, char** argv) {
       if (verbose) {
         const bench::PlayRunResult& r = results.back();
         std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s waited %4.1f s created %d "
-                    "overlaps %d/%d held up %4.1f s beside %4.1f s traffic %4.2f right %d/%d  %s\n",
+                    "overlaps %d/%d held up %4.1f s beside %4.1f s traffic %4.2f right %d/%d actors' decel %3.1f m/s2  %s\n",
                     i, static_cast<unsigned long long>(s), bench::to_string(v), director::to_string(r.final_phase),
                     r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s, r.handover_wait_s, r.created,
                     r.overlaps_with_actor, r.overlaps_other, r.held_up_s, r.actor_beside_ego_s, r.traffic_slowed_to(),
-                    r.passed_on_right.total(), r.passed_on_right_undirected.total(), r.failure.c_str());
+                    r.passed_on_right.total(), r.passed_on_right_undirected.total(), r.actors.max_decel_mps2,
+                    r.failure.c_str());
       }
     }
     print_play(loaded.config.plays.front().name + " (" + loaded.config.name + ")", results, variants);

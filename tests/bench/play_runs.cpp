@@ -60,6 +60,7 @@ const char* control_mark(ControlMode m) {
     case ControlMode::kTransported: return "T";
     case ControlMode::kControlled: return "C";
     case ControlMode::kReleasing: return "R";
+    case ControlMode::kWithdrawn: return "W";
   }
   return "?";
 }
@@ -201,6 +202,13 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
     for (const Handoff& h : out.director.births) {
       ++r.created;
       if (w.in_inner(h.vehicle.s_m)) ++r.created_in_view;
+    }
+    for (const StepOutput* o : {&out.micro, &out.meso}) {
+      for (const Handoff& h : o->handoffs) {
+        if (h.to_role != Role::kNone || h.reason != HandoffReason::kDirector) continue;
+        ++r.taken_off;
+        if (w.in_inner(h.vehicle.s_m)) ++r.taken_off_in_view;
+      }
     }
     for (const director::PlayReport& rep : out.director.reports) {
       if (rep.play_id != sc.plays.front().id) continue;

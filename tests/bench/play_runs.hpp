@@ -131,6 +131,8 @@ struct PlayRunResult {
   SignalsCalledOff called_off_autonomous;
   int created = 0;
   int created_in_view = 0;           // born inside the inner region: must be 0
+  int taken_off = 0;                 // withdrawn by the director (a gap in the oncoming traffic)
+  int taken_off_in_view = 0;         // of them inside the inner region: must be 0
   int overlaps_with_actor = 0;       // vehicle pairs overlapping where one is an actor
   int overlaps_other = 0;            // any other overlapping pair (autonomous traffic)
   int ego_contacts_with_actor = 0;   // the ego overlapping an actor (the ego may crash)

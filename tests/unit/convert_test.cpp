@@ -202,8 +202,8 @@ TEST(Convert, AHandoffWithABadControlIsRefused) {
       to_msg(make_handoff(v, 1, ServiceId{Role::kMicro, 0}, Role::kMeso, Region::kOuterRear, HandoffReason::kBorder),
              0.1, road);
   msg::Handoff mode = good;
-  mode.control().mode(4);
-  EXPECT_NE(check(mode, limits())->find("control mode 4"), std::string::npos);
+  mode.control().mode(5);
+  EXPECT_NE(check(mode, limits())->find("control mode 5"), std::string::npos);
   msg::Handoff nan = good;
   nan.control().speed_mps(std::numeric_limits<double>::infinity());
   EXPECT_NE(check(nan, limits())->find("not finite"), std::string::npos);
@@ -225,8 +225,8 @@ TEST(Convert, VehicleStateCarriesTheControlMode) {
   EXPECT_EQ(plain.control(), 0);
   EXPECT_EQ(from_msg(plain).control, ControlMode::kAutonomous);
   msg::VehicleState bad = m;
-  bad.control(4);
-  EXPECT_NE(check(bad, limits())->find("control mode 4"), std::string::npos);
+  bad.control(5);
+  EXPECT_NE(check(bad, limits())->find("control mode 5"), std::string::npos);
 }
 
 TEST(Convert, ActorCommandRoundTrip) {
@@ -245,6 +245,19 @@ TEST(Convert, ActorCommandRoundTrip) {
   expect_same_control(back.control, c.control);
 }
 
+// The director's withdrawal (a gap in the oncoming traffic) carries no speed or rates of its own.
+TEST(Convert, AWithdrawalCommandRoundTrips) {
+  ActorCommand c;
+  c.vehicle = 78;
+  c.step = 121;
+  c.control.mode = ControlMode::kWithdrawn;
+  c.control.play_id = 3;
+  const msg::ActorCommand m = to_msg(c, 12.1);
+  EXPECT_EQ(m.mode(), 4);
+  EXPECT_FALSE(check(m, limits()).has_value());
+  expect_same_control(from_msg(m).control, c.control);
+}
+
 TEST(Convert, BadActorCommandsAreRefusedWithAReason) {
   ActorCommand c;
   c.vehicle = 77;
@@ -259,8 +272,8 @@ TEST(Convert, BadActorCommandsAreRefusedWithAReason) {
   m.time_s(std::numeric_limits<double>::infinity());
   EXPECT_NE(reason(m).find("not finite"), std::string::npos);
   m = good;
-  m.mode(4);
-  EXPECT_EQ(reason(m), "unknown control mode 4");
+  m.mode(5);
+  EXPECT_EQ(reason(m), "unknown control mode 5");
   m = good;
   m.indicator(3);
   EXPECT_NE(reason(m).find("indicator 3"), std::string::npos);

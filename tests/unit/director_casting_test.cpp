@@ -113,6 +113,11 @@ TEST(Casting, OnOneLaneAVehicleWithAnotherBetweenItAndTheEgoCannotPlayARoleBehin
   EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], world[0], open, cfg)));
   const CastingSituation two{world, ego, 40.0, 3000.0, Lanes{2, 0}, {}, zones};
   EXPECT_FALSE(stuck_between(slot, world[0].s_m, world[0].id, two));
+  // Nor where the play opens a gap in the oncoming traffic, in which vehicle 2 may pass it.
+  CastingSituation gap{world, ego, 40.0, 3000.0, Lanes{1, 1}, {}, zones};
+  gap.oncoming_gap = true;
+  EXPECT_FALSE(stuck_between(slot, world[0].s_m, world[0].id, gap));
+  EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], world[0], gap, cfg)));
   // Nor is a vehicle created out of sight beyond vehicle 2 any better (20 s to go: a place ahead
   // is found without the zone, none with it).
   ScenarioConfig sc = testing::road_scenario(1, 1);

@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "core_test_util.hpp"
 #include "director_test_util.hpp"
@@ -442,6 +443,51 @@ TEST(Clearing, OnOneLanePerDirectionTheEgosFollowersKeepTheirLaneWhileAZoneLiesA
   // zone ahead of it, it is sent to the other lane instead).
   const auto freeway = commands_after_preparing(2);
   EXPECT_TRUE(freeway.count(8) == 0 || freeway.at(8).lane != 0);
+}
+
+// On one lane per direction, with a clear zone ahead of the ego, the play opens a gap in the
+// oncoming traffic for the vehicles between the ego and an actor ahead of it: while the ego drives
+// its first oncoming_gap_m from trigger point 1 and the role ahead of it has no actor yet (here)
+// or someone between, the oncoming vehicles out of the driver's sight (beyond the inner region and
+// the hidden margin, where vehicles are also created) are withdrawn. Not those in sight or behind
+// the ego, not the ego's direction, not beyond that stretch, not with the gap off, not with a
+// second lane in the ego's direction, not once the role has an actor with nobody between.
+TEST(Clearing, APlayOnOneLanePerDirectionOpensAGapInTheOncomingTrafficOutOfSight) {
+  auto withdrawn_after = [](int lanes_forward, double gap_m, double from_trigger1_m, bool lead_in_place = false) {
+    ScenarioConfig sc = testing::minimal_scenario();
+    sc.road.lanes_forward = lanes_forward;
+    sc.road.lanes_backward = 1;
+    sc.road.kind = RoadKind::kRural;
+    sc.director.oncoming_gap_m = gap_m;
+    PlayConfig play = lead_play();
+    play.clear = {{0, 3.0, 37.0}};
+    sc.plays = {play};
+    DirectorCore core(sc, 1);
+    const double sight_m = sc.window.inner_ahead_m + sc.director.hidden_margin_m;
+    std::set<VehicleId> withdrawn;
+    for (Step k = 0; k < 3; ++k) {  // trigger point 1 (or beyond it); then preparing
+      StepInput in;
+      in.step = k;
+      in.ego = testing::ego_at(k, play.trigger1_s_m + from_trigger1_m + 2.5 * static_cast<double>(k), 25.0);
+      const double e = in.ego.s_m;
+      in.world_prev = {vehicle(20, e + sight_m + 30.0, 22.0, 0, Direction::kBackward),
+                       vehicle(21, e + sight_m - 30.0, 22.0, 0, Direction::kBackward),
+                       vehicle(22, e + sight_m + 60.0, 25.0),
+                       vehicle(23, e - 100.0, 22.0, 0, Direction::kBackward)};
+      if (lead_in_place) in.world_prev.push_back(vehicle(24, e + 40.0, 25.0));
+      for (const ActorCommand& c : core.step(in).commands) {
+        if (c.control.mode == ControlMode::kWithdrawn) withdrawn.insert(c.vehicle);
+      }
+    }
+    return withdrawn;
+  };
+  const std::set<VehicleId> only_20{20};
+  EXPECT_EQ(withdrawn_after(1, 800.0, 0.0), only_20);
+  EXPECT_EQ(withdrawn_after(1, 800.0, 700.0), only_20);
+  EXPECT_TRUE(withdrawn_after(1, 800.0, 850.0).empty());
+  EXPECT_TRUE(withdrawn_after(1, 0.0, 0.0).empty());
+  EXPECT_TRUE(withdrawn_after(2, 800.0, 0.0).empty());
+  EXPECT_TRUE(withdrawn_after(1, 800.0, 0.0, true).empty());
 }
 
 }  // namespace

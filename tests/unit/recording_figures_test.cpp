@@ -182,6 +182,29 @@ HandoffRow border(std::uint64_t step, std::uint32_t id, const char* from, const 
   return {step, 0.1 * step, id, 2, from, to_role, "inner", "border", 0, 1000.0, 30.0};
 }
 
+// A run's summary counts what left the road: retired beyond the window's edges and, apart, what the
+// director took off out of sight (a gap in the oncoming traffic).
+TEST(RunSummary, CountsTheVehiclesTheDirectorTookOffApart) {
+  Tables t = ego_driving(20.0, 10);
+  auto handoff = [](std::uint32_t id, const char* from, const char* to_role, const char* reason) {
+    HandoffRow h;
+    h.step = 5;
+    h.vehicle_id = id;
+    h.from = from;
+    h.to_role = to_role;
+    h.reason = reason;
+    return h;
+  };
+  t.handoffs = {handoff(1, "generator", "meso", "birth"), handoff(1, "meso", "none", "left_window"),
+                handoff(2, "meso", "none", "director"), handoff(3, "meso", "micro", "border")};
+  sort_rows(t);
+  const RunSummary s = summarize(t, testing::minimal_scenario(), 500.0);
+  EXPECT_EQ(s.generated, 1U);
+  EXPECT_EQ(s.removed, 2U);
+  EXPECT_EQ(s.taken_off, 1U);
+  EXPECT_EQ(s.transfers, 1U);
+}
+
 TEST(Transitions, AVehicleIntoMicroCountsItsHardestBrakingOverItsFirstThreeSecondsThere) {
   Tables t;
   // Vehicle 1: handed to micro at step 10; it brakes at 1, 4, then 2 m/s^2, and at 8 m/s^2 only

@@ -186,6 +186,40 @@ TEST(MesoCore, VehiclesLeavingAheadGoOnInTheFrontZoneOthersRetire) {
   EXPECT_EQ(out.handoffs[1].reason, HandoffReason::kLeftWindow);
 }
 
+// A vehicle the director withdraws (a gap it opens in the oncoming traffic) is taken off the road
+// at the step its owner gets the command: handed to nobody, no longer published, counted.
+TEST(MesoCore, AVehicleWithdrawnByTheDirectorIsTakenOffTheRoad) {
+  ScenarioConfig sc = minimal_scenario();
+  meso::MesoCore core(sc, kMesoId);
+  const EgoObservation ego = ego_at(0, 3000.0, 0.0);
+  const WindowBounds w = WindowBounds::around(3000.0, sc.window);
+  Vehicle oncoming = car(sc, 1, 0, w.inner_front_m + 300.0, 25.0, 25.0);
+  oncoming.direction = Direction::kBackward;
+  Vehicle other = car(sc, 2, 0, w.inner_front_m + 200.0, 25.0, 25.0);
+  StepOutput out = run_step(core, 1, ego,
+                            {birth(oncoming, Role::kMeso, Region::kOuterFront), birth(other, Role::kMeso, Region::kOuterFront)}, {});
+  ASSERT_EQ(out.states.size(), 2U);
+  ActorCommand c;
+  c.vehicle = 1;
+  c.step = 1;
+  c.control.mode = ControlMode::kWithdrawn;
+  StepInput in;
+  in.step = 2;
+  in.ego = ego;
+  in.ego_prev = ego;
+  in.world_prev = as_world(out, kMesoId);
+  in.commands = {c};
+  out = core.step(in);
+  ASSERT_EQ(out.handoffs.size(), 1U);
+  EXPECT_EQ(out.handoffs[0].vehicle.id, 1U);
+  EXPECT_EQ(out.handoffs[0].to_role, Role::kNone);
+  EXPECT_EQ(out.handoffs[0].reason, HandoffReason::kDirector);
+  ASSERT_EQ(out.states.size(), 1U);
+  EXPECT_EQ(out.states[0].id, 2U);
+  EXPECT_EQ(core.counters().taken_off, 1U);
+  EXPECT_EQ(core.counters().retired, 0U);
+}
+
 TEST(MesoCore, AFrontOnlyInstanceHandsRearVehiclesOn) {
   ScenarioConfig sc = minimal_scenario();
   meso::MesoCore core(sc, ServiceId{Role::kMeso, kMesoFront});

@@ -101,6 +101,7 @@ director {
   hidden_margin_m: 80
   beside_wait_ahead_m: -30
   beside_approach_s: 15
+  oncoming_gap_m: 0
 }
 )";
 
@@ -197,6 +198,7 @@ TEST(ScenarioPlays, AFullPlayResolvesToSiValues) {
   EXPECT_DOUBLE_EQ(dc.hidden_margin_m, 80.0);
   EXPECT_DOUBLE_EQ(dc.beside_wait_ahead_m, -30.0);
   EXPECT_DOUBLE_EQ(dc.beside_approach_s, 15.0);
+  EXPECT_DOUBLE_EQ(dc.oncoming_gap_m, 0.0);
 }
 
 TEST(ScenarioPlays, DirectorDefaultsAreTheSchemas) {
@@ -215,6 +217,8 @@ TEST(ScenarioPlays, DirectorDefaultsAreTheSchemas) {
   const DirectorConfig plain;  // the C++ defaults agree
   EXPECT_DOUBLE_EQ(plain.beside_wait_ahead_m, dc.beside_wait_ahead_m);
   EXPECT_DOUBLE_EQ(plain.beside_approach_s, dc.beside_approach_s);
+  EXPECT_DOUBLE_EQ(dc.oncoming_gap_m, 800.0);
+  EXPECT_DOUBLE_EQ(plain.oncoming_gap_m, dc.oncoming_gap_m);
 }
 
 TEST(ScenarioPlays, AProblemNamesTheLineOfTheField) {
@@ -378,6 +382,7 @@ TEST(ScenarioPlays, EachMistakeIsRefusedWithTheFieldNamed) {
       {"no approach", "director { beside_approach_s: 0 }\n", "director.beside_approach_s", "got 0"},
       {"waiting out of the window", "director { beside_wait_ahead_m: 2000 }\n", "director.beside_wait_ahead_m",
        "got 2000"},
+      {"a negative oncoming gap", "director { oncoming_gap_m: -100 }\n", "director.oncoming_gap_m", "got -100"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.what);

@@ -66,7 +66,7 @@ bool gap_is_free(const Slot& slot, double s_m, double length_m, double speed_mps
 }  // namespace
 
 bool stuck_between(const Slot& slot, double s_m, VehicleId self, const CastingSituation& at) {
-  if (at.lanes.of(slot.direction) > 1 || at.ego.direction != slot.direction) return false;
+  if (at.oncoming_gap || at.lanes.of(slot.direction) > 1 || at.ego.direction != slot.direction) return false;
   const int dir = sign(slot.direction);
   const double ego_then_p = dir * at.ego_s_at_handover_m;
   const double slot_p = dir * slot.s_m;

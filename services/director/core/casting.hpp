@@ -29,13 +29,15 @@ struct CastingSituation {
   Lanes lanes;
   TypeAccels type_accel_mps2;
   std::vector<ZoneAtStart> zones = {};  // the play's clear zones at the start (the ego then)
+  bool oncoming_gap = false;  // the play opens a gap in the oncoming traffic (play.hpp, open_oncoming_gap)
 };
 
 // On one lane per direction nothing gets out from between the ego and a vehicle ahead of it (actors
 // do not overtake, the others only where the oncoming lane lets them): a vehicle between them now
 // is still between them at the start. Where a clear zone of the slot's lane lies between the ego
 // and a slot ahead of it then, a vehicle at `s_m` with any other vehicle between it and the ego
-// cannot play the role (the play would fail on that vehicle in the zone).
+// cannot play the role (the play would fail on that vehicle in the zone). Unless the play opens a
+// gap in the oncoming traffic (`at.oncoming_gap`), in which the vehicles between may pass it.
 bool stuck_between(const Slot& slot, double s_m, VehicleId self, const CastingSituation& at);
 
 // The cost of `v` playing a role with start `slot` (infinite: it cannot).

@@ -102,6 +102,13 @@ ActorControl PlayRun::transported(double speed_mps, int lane) const {
   return c;
 }
 
+ActorControl PlayRun::withdrawn() const {
+  ActorControl c;
+  c.mode = ControlMode::kWithdrawn;
+  c.play_id = play_.id;
+  return c;
+}
+
 ActorControl PlayRun::releasing() const {
   ActorControl c;
   c.mode = ControlMode::kReleasing;
@@ -265,6 +272,7 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
   }
   move_actors(in, slots, aim.time_s, pred.time_s, out);
   clear_zones(in, slots, aim, pred.time_s, out);
+  open_oncoming_gap(in, out);
   if (!cast_detail.empty()) report(in, out, "cast: " + cast_detail);
 }
 
@@ -273,7 +281,8 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
   const CastingSituation at{in.world,       in.ego,
                             aim.time_s,     aim.ego_s_m,
                             setting_.lanes, setting_.type_accel_mps2,
-                            zones_of(staged_, in.ego.direction, staged_lane(in), aim.ego_s_m, setting_.lanes)};
+                            zones_of(staged_, in.ego.direction, staged_lane(in), aim.ego_s_m, setting_.lanes),
+                            opens_oncoming_gap(in)};
   // Only the roles still without an actor are cast; the others keep theirs. Each is cast for where
   // its way leads first (way_to: a cutter waits ahead of its start until the approach), as
   // move_actors will move it: cast or created for its start instead, a cutter from behind had
@@ -483,7 +492,7 @@ void PlayRun::finish_release(const PlayInput& in, PlayOutput& out) {
   if (released_ || in.ego.time_s < release_until_s_ - 1e-9) return;
   released_ = true;
   for (const auto& [id, c] : std::map<VehicleId, ActorControl>(sent_)) {
-    if (c.mode == ControlMode::kAutonomous) continue;
+    if (c.mode == ControlMode::kAutonomous || c.mode == ControlMode::kWithdrawn) continue;
     command(id, ActorControl{}, in.step, out);
   }
   for (Role& r : roles_) r.actor = kNoVehicle;

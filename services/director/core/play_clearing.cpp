@@ -118,13 +118,54 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   }
 }
 
+bool PlayRun::zone_ahead_on_one_lane(const PlayInput& in) const {
+  return setting_.lanes.of(in.ego.direction) == 1 &&
+         std::any_of(staged_.clear.begin(), staged_.clear.end(),
+                     [](const PlayClearZoneConfig& z) { return z.lane_offset == 0 && z.to_m > 0.0; });
+}
+
+bool PlayRun::opens_oncoming_gap(const PlayInput& in) const {
+  return setting_.director.oncoming_gap_m > 0.0 && zone_ahead_on_one_lane(in);
+}
+
+bool PlayRun::someone_between(const PlayInput& in) const {
+  // The roles ahead of the ego in its lane at the start (the truck): an actor not cast yet, or a
+  // vehicle of the ego's direction between the ego and its actor now.
+  const int dir = sign(in.ego.direction);
+  const double ego_p = dir * in.ego.s_m;
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
+    const PlayRoleConfig& rc = staged_.roles[r];
+    if (rc.direction != Direction::kForward || rc.lane_offset != 0 || rc.ahead_m <= 0.0) continue;
+    const ObservedVehicle* a = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    if (a == nullptr) return true;
+    const double a_p = dir * a->s_m;
+    for (const ObservedVehicle& v : in.world) {
+      const double p = dir * v.s_m;
+      if (v.id != a->id && v.direction == in.ego.direction && p > ego_p && p < a_p) return true;
+    }
+  }
+  return false;
+}
+
+void PlayRun::open_oncoming_gap(const PlayInput& in, PlayOutput& out) {
+  const int dir = sign(in.ego.direction);
+  const double from_trigger1_m = dir * (in.ego.s_m - play_.trigger1_s_m);
+  if (!opens_oncoming_gap(in) || from_trigger1_m < 0.0 || from_trigger1_m > setting_.director.oncoming_gap_m ||
+      !someone_between(in)) {
+    return;
+  }
+  const double out_of_sight_m = setting_.window.inner_ahead_m + setting_.director.hidden_margin_m;
+  for (std::size_t i = 0; i < in.world.size(); ++i) {
+    const ObservedVehicle& v = in.world[i];
+    if (!in.available[i] || v.direction == in.ego.direction || dir * (v.s_m - in.ego.s_m) <= out_of_sight_m) continue;
+    in.available[i] = false;
+    command(v.id, withdrawn(), in.step, out);
+  }
+}
+
 void PlayRun::hold_followers(const PlayInput& in, PlayOutput& out) {
   const int lane = staged_lane(in);
-  if (setting_.lanes.of(in.ego.direction) != 1 || in.ego.lane != lane || in.ego.target_lane != lane) return;
-  const bool zone_ahead = std::any_of(staged_.clear.begin(), staged_.clear.end(), [](const PlayClearZoneConfig& z) {
-    return z.lane_offset == 0 && z.to_m > 0.0;
-  });
-  if (!zone_ahead) return;
+  if (!zone_ahead_on_one_lane(in) || in.ego.lane != lane || in.ego.target_lane != lane) return;
   const int dir = sign(in.ego.direction);
   for (std::size_t i = 0; i < in.world.size(); ++i) {
     const ObservedVehicle& v = in.world[i];

@@ -274,6 +274,9 @@ void MesoCore::move() {
 
 MesoCore::Fate MesoCore::fate_of(const Vehicle& v, const WindowBounds& w) const {
   const double margin = scenario_.window.handoff_hysteresis_m;
+  // Withdrawn by the director: off the road where the driver cannot see it, in the middle of a
+  // pass or not (in the inner region it drives on, as micro would drive it).
+  if (v.control.mode == ControlMode::kWithdrawn && !w.in_inner(v.s_m)) return Fate::kTakenOff;
   const bool out_ahead = v.s_m > w.front_edge_m + margin;
   if ((out_ahead && v.direction == Direction::kBackward) || v.s_m < w.rear_edge_m - margin) return Fate::kRetires;
   // An overtaker finishes its pass here first: a handoff does not carry the manoeuvre (micro
@@ -297,7 +300,8 @@ StepOutput MesoCore::hand_off(const StepInput& in) {
   for (const Vehicle& v : fleet_.vehicles()) {
     const Fate fate = fate_of(v, w);
     const Region r = fate == Fate::kToFrontZone ? Region::kOutside : w.region_of(v.s_m);
-    if (fate != Fate::kRetires) out.states.emplace_back(v, r);
+    const bool gone = fate == Fate::kRetires || fate == Fate::kTakenOff;
+    if (!gone) out.states.emplace_back(v, r);
     if (fate == Fate::kStays) continue;
     someone_leaves = true;
     Handoff h;
@@ -309,6 +313,10 @@ StepOutput MesoCore::hand_off(const StepInput& in) {
       case Fate::kRetires:
         h = make_handoff(v, in.step, self_, Role::kNone, Region::kOutside, HandoffReason::kLeftWindow);
         ++counters_.retired;
+        break;
+      case Fate::kTakenOff:
+        h = make_handoff(v, in.step, self_, Role::kNone, Region::kOutside, HandoffReason::kDirector);
+        ++counters_.taken_off;
         break;
       case Fate::kToMicro:
         h = make_handoff(v, in.step, self_, Role::kMicro, r, HandoffReason::kBorder);

@@ -40,6 +40,7 @@ struct Counters {
   std::uint64_t to_micro = 0;
   std::uint64_t to_other_meso = 0;
   std::uint64_t retired = 0;
+  std::uint64_t taken_off = 0;  // withdrawn by the director out of the driver's sight (retired)
   std::uint64_t to_front_zone = 0;  // left ahead in the ego's direction: on to the generator
   std::uint64_t duplicate_handoffs = 0;
   std::uint64_t commands_applied = 0;  // director commands to vehicles owned here
@@ -72,7 +73,7 @@ class MesoCore {
 
  private:
   // What becomes of a vehicle at the end of a step.
-  enum class Fate : std::uint8_t { kStays, kToFrontZone, kRetires, kToMicro, kToOtherMeso };
+  enum class Fate : std::uint8_t { kStays, kToFrontZone, kRetires, kTakenOff, kToMicro, kToOtherMeso };
 
   void adopt(const StepInput& in);
   // Between two plans: a lane change just begun is called off when a vehicle that has just joined
