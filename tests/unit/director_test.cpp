@@ -451,9 +451,13 @@ TEST(Clearing, OnOneLanePerDirectionTheEgosFollowersKeepTheirLaneWhileAZoneLiesA
 // or someone between, the oncoming vehicles out of the driver's sight (beyond the inner region and
 // the hidden margin, where vehicles are also created) are withdrawn. Not those in sight or behind
 // the ego, not the ego's direction, not beyond that stretch, not with the gap off, not with a
-// second lane in the ego's direction, not once the role has an actor with nobody between.
+// second lane in the ego's direction, not once the role has an actor with nobody between but
+// vehicles in the middle of a pass.
 TEST(Clearing, APlayOnOneLanePerDirectionOpensAGapInTheOncomingTrafficOutOfSight) {
-  auto withdrawn_after = [](int lanes_forward, double gap_m, double from_trigger1_m, bool lead_in_place = false) {
+  // lead_in_place: a car at the lead's start from the first step (cast as the lead), and `between`
+  // of them (0: none; 1: a car between it and the ego; 2: that car in the oncoming lane, passing).
+  auto withdrawn_after = [](int lanes_forward, double gap_m, double from_trigger1_m, bool lead_in_place = false,
+                            int between = 0) {
     ScenarioConfig sc = testing::minimal_scenario();
     sc.road.lanes_forward = lanes_forward;
     sc.road.lanes_backward = 1;
@@ -461,6 +465,7 @@ TEST(Clearing, APlayOnOneLanePerDirectionOpensAGapInTheOncomingTrafficOutOfSight
     sc.director.oncoming_gap_m = gap_m;
     PlayConfig play = lead_play();
     play.clear = {{0, 3.0, 37.0}};
+    play.roles[0].type_index = 0;
     sc.plays = {play};
     DirectorCore core(sc, 1);
     const double sight_m = sc.window.inner_ahead_m + sc.director.hidden_margin_m;
@@ -475,6 +480,11 @@ TEST(Clearing, APlayOnOneLanePerDirectionOpensAGapInTheOncomingTrafficOutOfSight
                        vehicle(22, e + sight_m + 60.0, 25.0),
                        vehicle(23, e - 100.0, 22.0, 0, Direction::kBackward)};
       if (lead_in_place) in.world_prev.push_back(vehicle(24, e + 40.0, 25.0));
+      if (between > 0) {
+        ObservedVehicle other_type = vehicle(25, e + 20.0, 25.0, between == 2 ? 1 : 0);
+        other_type.type_index = 1;  // cannot play the lead
+        in.world_prev.push_back(other_type);
+      }
       for (const ActorCommand& c : core.step(in).commands) {
         if (c.control.mode == ControlMode::kWithdrawn) withdrawn.insert(c.vehicle);
       }
@@ -488,6 +498,10 @@ TEST(Clearing, APlayOnOneLanePerDirectionOpensAGapInTheOncomingTrafficOutOfSight
   EXPECT_TRUE(withdrawn_after(1, 0.0, 0.0).empty());
   EXPECT_TRUE(withdrawn_after(2, 800.0, 0.0).empty());
   EXPECT_TRUE(withdrawn_after(1, 800.0, 0.0, true).empty());
+  EXPECT_EQ(withdrawn_after(1, 800.0, 0.0, true, 1), only_20);
+  // A vehicle already passing is out of the way once back in: the gap closes (the ego, too, sees
+  // the oncoming traffic sooner).
+  EXPECT_TRUE(withdrawn_after(1, 800.0, 0.0, true, 2).empty());
 }
 
 }  // namespace

@@ -50,7 +50,7 @@ INSTANTIATE_TEST_SUITE_P(Shipped, PlaySucceeds,
                                            Case{"rural_slow_truck", 14}, Case{"rural_slow_truck", 8},
                                            Case{"rural_slow_truck", 22}, Case{"rural_slow_truck", 4}),
                          // rural: 4 since stop 41 (a gap in the oncoming traffic, director
-                         // README: 22 of seeds 1-40 succeed, 9 without it, 4 among the 13 gained);
+                         // README: 24 of seeds 1-40 succeed, 9 without it, 4 among the 15 gained);
                          // 8 and 22 since stop 35 (the start time behind a leader the ego
                          // cannot pass, the truck's speed floor, followers that do not pass: 9 of
                          // seeds 1-40 succeed: 7, 8, 9, 12, 14, 22, 29, 35, 40; before, 5: 7, 9,

@@ -146,16 +146,16 @@ class PlayRun {
   // Whether the play opens a gap in the oncoming traffic (DirectorConfig::oncoming_gap_m).
   bool opens_oncoming_gap(const PlayInput& in) const;
   // The gap: while the ego drives its first oncoming_gap_m from trigger point 1 and a role ahead
-  // of it in its lane has no actor yet or another vehicle between the actor and the ego
-  // (someone_between), every oncoming vehicle that no play holds, more than hidden_margin_m
+  // of it in its lane has no actor yet or another vehicle between the actor and the ego, not in
+  // the middle of a pass (someone_between), every oncoming vehicle that no play holds, more than hidden_margin_m
   // beyond the inner region (out of the driver's sight, where vehicles are also created), is
   // withdrawn (taken off the road by its owner). The oncoming lane ahead then empties as the
   // oncoming vehicles in view drive by, and the vehicles between the ego and the actor can pass
   // it. Without it, cars between the ego and any truck it could be given stayed there
   // (casting.hpp, stuck_between): in most runs at 450 vehicles an hour each way the ego drives
   // in a platoon, and the play failed for want of a truck with nothing between (NOTES.md, stop
-  // 39). Closed as soon as nobody is between: the ego uses the gap too, and passed the truck in
-  // it or came early.
+  // 39). Closed as soon as nobody is between but vehicles already passing: the ego uses the gap
+  // too, and passed the truck in it or came early.
   void open_oncoming_gap(const PlayInput& in, PlayOutput& out);
   bool someone_between(const PlayInput& in) const;
   // Whether a vehicle this play holds keeps the lane change it was asked for instead of `lane`

@@ -130,7 +130,8 @@ bool PlayRun::opens_oncoming_gap(const PlayInput& in) const {
 
 bool PlayRun::someone_between(const PlayInput& in) const {
   // The roles ahead of the ego in its lane at the start (the truck): an actor not cast yet, or a
-  // vehicle of the ego's direction between the ego and its actor now.
+  // vehicle of the ego's direction between the ego and its actor now, unless it is already
+  // passing (in the oncoming lane, or moving there): it will be out of the way.
   const int dir = sign(in.ego.direction);
   const double ego_p = dir * in.ego.s_m;
   for (std::size_t r = 0; r < roles_.size(); ++r) {
@@ -141,7 +142,9 @@ bool PlayRun::someone_between(const PlayInput& in) const {
     const double a_p = dir * a->s_m;
     for (const ObservedVehicle& v : in.world) {
       const double p = dir * v.s_m;
-      if (v.id != a->id && v.direction == in.ego.direction && p > ego_p && p < a_p) return true;
+      const int lanes = setting_.lanes.of(v.direction);
+      const bool passing = v.lane >= lanes || v.target_lane >= lanes;
+      if (v.id != a->id && v.direction == in.ego.direction && p > ego_p && p < a_p && !passing) return true;
     }
   }
   return false;
