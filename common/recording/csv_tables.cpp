@@ -41,7 +41,8 @@ namespace {
 const std::vector<std::string_view> kRegions{"outside", "outer_rear", "inner", "outer_front"};
 const std::vector<std::string_view> kToRoles{"none", "micro", "meso", "director", "other"};
 const std::vector<std::string_view> kReasons{"birth", "initial_fill", "border", "left_window", "director", "unknown"};
-const std::vector<std::string_view> kControlModes{"autonomous", "transported", "controlled", "releasing", "unknown"};
+const std::vector<std::string_view> kControlModes{"autonomous", "transported", "controlled", "releasing", "withdrawn",
+                                                  "unknown"};
 const std::vector<std::string_view> kFlags{"0", "1"};
 
 std::string in_dir(const std::string& dir, const char* file) { return dir + "/" + file; }

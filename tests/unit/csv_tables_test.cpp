@@ -76,6 +76,7 @@ Tables sample() {
   t.plays.push_back({2, 0.2, 1, "lead vehicle brakes", 7, 1300.5, -1.0, 2, 1, 3, -7.25, 1.0 / 3.0, "outcome: braked, \"hard\""});
   t.commands.push_back({2, 0.2, 4000000000U, 1, "controlled", 1.0 / 3.0, 2.5, 7.25, 1e-3, -1, true, 0.0, 2});
   t.commands.push_back({3, 0.30000000000000004, 7, 1, "releasing", 0.0, 1.0, 1.0, 2.0, 15, false, 3.5, 0});
+  t.commands.push_back({3, 0.30000000000000004, 8, 1, "withdrawn", 0.0, 1.0, 1.0, 2.0, -1, false, 0.0, 0});
   return t;
 }
 
@@ -117,7 +118,7 @@ TEST(CsvTables, RoundTripGivesTheSameValues) {
   EXPECT_EQ(back->plays[0].detail, "outcome: braked, \"hard\"");
   EXPECT_EQ(back->vehicles[3].control, "transported");  // step 2, vehicle 4000000000
   EXPECT_EQ(back->vehicles[2].control, "autonomous");
-  ASSERT_EQ(back->commands.size(), 2U);
+  ASSERT_EQ(back->commands.size(), 3U);
   EXPECT_EQ(back->commands[0].vehicle_id, 4000000000U);
   EXPECT_EQ(back->commands[0].mode, "controlled");
   EXPECT_EQ(back->commands[0].speed_mps, 1.0 / 3.0);
@@ -129,6 +130,7 @@ TEST(CsvTables, RoundTripGivesTheSameValues) {
   EXPECT_EQ(back->commands[1].mode, "releasing");
   EXPECT_FALSE(back->commands[1].force_lane);
   EXPECT_EQ(back->commands[1].lane, 15);
+  EXPECT_EQ(back->commands[2].mode, "withdrawn");  // an oncoming vehicle taken off for a gap
   EXPECT_EQ(back->info.scenario_text, t.info.scenario_text);
   EXPECT_EQ(back->info.scenario_name, t.info.scenario_name);
   EXPECT_EQ(back->info.peers, t.info.peers);
@@ -253,7 +255,7 @@ TEST(CsvTables, ABadCommandFieldIsNamed) {
   EXPECT_EQ(row, "2,0.2,4000000000,1,controlled,0.3333333333333333,2.5,7.25,0.001,-1,1,0,2");
   replace_line(dir + "/commands.csv", 2, "2,0.2,4000000000,1,steered,0.3333333333333333,2.5,7.25,0.001,-1,1,0,2");
   EXPECT_EQ(refusal(dir), dir + "/commands.csv:2:5: mode: \"steered\" is not one of "
-                              "autonomous,transported,controlled,releasing,unknown");
+                              "autonomous,transported,controlled,releasing,withdrawn,unknown");
   replace_line(dir + "/commands.csv", 2, "2,0.2,4000000000,1,controlled,0.3333333333333333,2.5,7.25,0.001,-1,yes,0,2");
   EXPECT_EQ(refusal(dir), dir + "/commands.csv:2:11: force_lane: \"yes\" is not one of 0,1");
   std::string vehicles = line_of(dir + "/vehicles.csv", 2);
