@@ -29,16 +29,18 @@ Vehicle car(const ScenarioConfig& sc, VehicleId id, int lane, double s, double v
 
 Handoff birth(const Vehicle& v, Role to, Region r) { return make_handoff(v, 0, kGen, to, r, HandoffReason::kBirth); }
 
-// Runs a core with a standing world around it (the ego at a fixed place) and returns its output.
+// Runs a core with a standing world around it (the ego at a fixed place) and returns its output;
+// `commands`: the director's, written at the previous step.
 template <class Core>
 StepOutput run_step(Core& core, Step k, const EgoObservation& ego, std::vector<Handoff> handoffs,
-                    const std::vector<ObservedVehicle>& world) {
+                    const std::vector<ObservedVehicle>& world, std::vector<ActorCommand> commands = {}) {
   StepInput in;
   in.step = k;
   in.ego = ego;
   in.ego_prev = ego;
   in.world_prev = world;
   in.handoffs = std::move(handoffs);
+  in.commands = std::move(commands);
   return core.step(in);
 }
 
@@ -203,13 +205,7 @@ TEST(MesoCore, AVehicleWithdrawnByTheDirectorIsTakenOffTheRoad) {
   c.vehicle = 1;
   c.step = 1;
   c.control.mode = ControlMode::kWithdrawn;
-  StepInput in;
-  in.step = 2;
-  in.ego = ego;
-  in.ego_prev = ego;
-  in.world_prev = as_world(out, kMesoId);
-  in.commands = {c};
-  out = core.step(in);
+  out = run_step(core, 2, ego, {}, as_world(out, kMesoId), {c});
   ASSERT_EQ(out.handoffs.size(), 1U);
   EXPECT_EQ(out.handoffs[0].vehicle.id, 1U);
   EXPECT_EQ(out.handoffs[0].to_role, Role::kNone);
