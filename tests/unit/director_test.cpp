@@ -3,6 +3,7 @@
 // director_transport_test).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
 #include <map>
 #include <optional>
@@ -502,6 +503,86 @@ TEST(Clearing, APlayOnOneLanePerDirectionOpensAGapInTheOncomingTrafficOutOfSight
   // A vehicle already passing is out of the way once back in: the gap closes (the ego, too, sees
   // the oncoming traffic sooner).
   EXPECT_TRUE(withdrawn_after(1, 800.0, 0.0, true, 2).empty());
+}
+
+TEST(Clearing, BehindItsActorOnOneLanePerDirectionTheEgoMeetsABusyOncomingLane) {
+  // The lead cast in view 40 m ahead of the ego with nobody between (or a car between), an
+  // oncoming role (a car at 80 km/h), and the oncoming lane as given: how many vehicles the play
+  // creates in the oncoming lane over three steps, and where.
+  struct Case {
+    double gap_m = 800.0;
+    double from_trigger1_m = 900.0;  // beyond the gap's stretch
+    std::optional<double> oncoming_m;        // an oncoming vehicle this far beyond the driver's sight
+    std::optional<double> passer_ahead_m;    // a car of the ego's direction passing, this far ahead
+    bool between = false;                    // a car between the ego and the lead, in its lane
+  };
+  auto created = [](const Case& c) {
+    ScenarioConfig sc = testing::minimal_scenario();
+    sc.road.lanes_forward = 1;
+    sc.road.lanes_backward = 1;
+    sc.road.kind = RoadKind::kRural;
+    sc.director.oncoming_gap_m = c.gap_m;
+    PlayConfig play = lead_play();
+    play.clear = {{0, 3.0, 37.0}};
+    play.roles[0].type_index = 0;
+    PlayRoleConfig oncoming;
+    oncoming.name = "oncoming";
+    oncoming.direction = Direction::kBackward;
+    oncoming.ahead_m = 200.0;
+    oncoming.speed_mps = 22.2;
+    oncoming.absolute_speed = true;
+    oncoming.position_tolerance_m = 50.0;
+    play.roles.push_back(oncoming);
+    sc.plays = {play};
+    DirectorCore core(sc, 1);
+    const double sight_m = sc.window.inner_ahead_m + sc.director.hidden_margin_m;
+    std::vector<double> ahead_of_ego;
+    for (Step k = 0; k < 3; ++k) {
+      StepInput in;
+      in.step = k;
+      in.ego = testing::ego_at(k, play.trigger1_s_m + c.from_trigger1_m + 2.5 * static_cast<double>(k), 25.0);
+      const double e = in.ego.s_m;
+      in.world_prev = {vehicle(24, e + 40.0, 25.0), vehicle(26, e - 300.0, 22.0, 0, Direction::kBackward)};
+      if (c.oncoming_m) in.world_prev.push_back(vehicle(20, e + sight_m + *c.oncoming_m, 22.0, 0, Direction::kBackward));
+      if (c.passer_ahead_m) in.world_prev.push_back(vehicle(21, e + *c.passer_ahead_m, 27.0, 1));
+      if (c.between) {
+        ObservedVehicle other_type = vehicle(25, e + 20.0, 25.0);
+        other_type.type_index = 1;  // cannot play the lead
+        in.world_prev.push_back(other_type);
+      }
+      for (const Handoff& h : core.step(in).births) {
+        if (h.vehicle.direction == Direction::kBackward) ahead_of_ego.push_back(h.vehicle.s_m - e);
+      }
+    }
+    EXPECT_TRUE(std::all_of(ahead_of_ego.begin(), ahead_of_ego.end(), [&](double a) { return a > sight_m; }));
+    return ahead_of_ego.size();
+  };
+  auto with = [](auto set) {
+    Case c;
+    set(c);
+    return c;
+  };
+  // An empty oncoming lane out to the driver's sight: one car just beyond it, once (the second
+  // step does not see it yet and counts it where it would be).
+  EXPECT_EQ(created(Case{}), 1U);
+  EXPECT_EQ(created(with([](Case& c) { c.oncoming_m = -250.0; })), 1U);
+  EXPECT_EQ(created(with([](Case& c) { c.oncoming_m = 250.0; })), 1U);
+  // An oncoming vehicle near the edge of sight, on either side: the lane is busy.
+  EXPECT_EQ(created(with([](Case& c) { c.oncoming_m = -150.0; })), 0U);
+  EXPECT_EQ(created(with([](Case& c) { c.oncoming_m = 150.0; })), 0U);
+  // Not while someone passes behind the lead (it needs the lane); once it is beyond the lead, yes.
+  EXPECT_EQ(created(with([](Case& c) { c.passer_ahead_m = 20.0; })), 0U);
+  EXPECT_EQ(created(with([](Case& c) { c.passer_ahead_m = 60.0; })), 1U);
+  // Not with a car between (in the gap's stretch the gap opens instead), nor with the gap off.
+  EXPECT_EQ(created(with([](Case& c) { c.between = true; })), 0U);
+  EXPECT_EQ(created(with([](Case& c) {
+              c.from_trigger1_m = 0.0;
+              c.between = true;
+            })),
+            0U);
+  EXPECT_EQ(created(with([](Case& c) { c.gap_m = 0.0; })), 0U);
+  // Within the gap's stretch with nobody between: the lane is kept busy as well.
+  EXPECT_EQ(created(with([](Case& c) { c.from_trigger1_m = 0.0; })), 1U);
 }
 
 }  // namespace

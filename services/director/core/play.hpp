@@ -158,6 +158,25 @@ class PlayRun {
   // too, and passed the truck in it or came early.
   void open_oncoming_gap(const PlayInput& in, PlayOutput& out);
   bool someone_between(const PlayInput& in) const;
+  // Once the gap is closed (or was never needed) and the ego is behind every such actor with
+  // nobody between, the oncoming lane is kept busy out of sight until the handover: where no
+  // oncoming vehicle is within kFillSpacing_m of the driver's sight (hidden_margin_m beyond the
+  // inner region), an autonomous one is created just beyond it, at the speed of the oncoming
+  // traffic ahead (the play's scene: "dense oncoming traffic that prevents overtaking"). Not
+  // while a vehicle of the ego's direction is passing behind the actor ahead, nor while the ego
+  // passes. Without it the ego, right behind the truck, saw the empty lane the gap left behind
+  // (some 25 s, until the generator's new arrivals at the window's edge had crossed the outer
+  // region) or a natural gap, and passed the truck: a quarter of the failed runs (stop 42).
+  void fill_oncoming_lane(const PlayInput& in, PlayOutput& out);
+  // How far ahead of the ego the farthest role ahead of it in its lane has its actor, when every
+  // such role has one in view ahead of the ego (inner region); -1 otherwise.
+  double actors_ahead_in_view_m(const PlayInput& in) const;
+  // A vehicle of the ego's direction passing (in the oncoming lane or moving there) between the
+  // inner region's rear and just beyond the actor `actor_ahead_m` ahead of the ego.
+  bool someone_passing_behind(const PlayInput& in, double actor_ahead_m) const;
+  // An oncoming vehicle within kFillSpacing_m of the edge of the driver's sight `sight_m` ahead
+  // of the ego (the vehicles this play created and not yet saw where they would be now).
+  bool oncoming_near_sight(const PlayInput& in, double sight_m) const;
   // Whether a vehicle this play holds keeps the lane change it was asked for instead of `lane`
   // (transport.hpp, keeps_lane_request).
   bool holds_lane_request(const ObservedVehicle& v, int lane, double now_s) const;
@@ -196,6 +215,15 @@ class PlayRun {
   std::vector<VehicleId> cleared_;          // vehicles asked to leave a zone
   std::map<VehicleId, VehicleId> letting_in_;  // a vehicle let in -> the one holding back for it
   std::map<VehicleId, LaneRequest> lane_requests_;  // lane changes asked of cleared vehicles
+  // Oncoming vehicles this play created to keep the lane busy (fill_oncoming_lane), until they
+  // are seen in the world: where they were created, at what speed and when.
+  struct Filler {
+    VehicleId id = kNoVehicle;
+    double s_m = 0.0;
+    double speed_mps = 0.0;
+    double time_s = 0.0;
+  };
+  std::vector<Filler> fillers_;
   std::vector<ActorControl> scripted_;      // per role, once handed over
   std::optional<Script> script_;
   double estimated_start_s_ = -1.0;

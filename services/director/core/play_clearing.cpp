@@ -15,6 +15,16 @@ namespace {
 // kBesideZone_m of it, where they will be then) keep their lane.
 constexpr double kHoldLanesBefore_s = 15.0;
 constexpr double kBesideZone_m = 30.0;
+// The oncoming lane kept busy (fill_oncoming_lane): no stretch this long on either side of the
+// driver's sight without an oncoming vehicle (some 4.5 s apart as they meet the ego at 45 m/s; a
+// pass behind a truck at 60 km/h needs a gap of some 500 m); the vehicle created this far beyond
+// the sight.
+constexpr double kFillSpacing_m = 200.0;
+constexpr double kFillBeyondSight_m = 10.0;
+// A vehicle created and not yet seen in the world is remembered this long at most.
+constexpr double kFillerMemory_s = 2.0;
+// A vehicle of the ego's direction this far beyond the actor ahead has passed it (it is moving back in).
+constexpr double kPassedBeyond_m = 5.0;
 }  // namespace
 
 bool PlayRun::holds_lane_request(const ObservedVehicle& v, int lane, double now_s) const {
@@ -153,8 +163,9 @@ bool PlayRun::someone_between(const PlayInput& in) const {
 void PlayRun::open_oncoming_gap(const PlayInput& in, PlayOutput& out) {
   const int dir = sign(in.ego.direction);
   const double from_trigger1_m = dir * (in.ego.s_m - play_.trigger1_s_m);
-  if (!opens_oncoming_gap(in) || from_trigger1_m < 0.0 || from_trigger1_m > setting_.director.oncoming_gap_m ||
-      !someone_between(in)) {
+  if (!opens_oncoming_gap(in) || from_trigger1_m < 0.0) return;
+  if (from_trigger1_m > setting_.director.oncoming_gap_m || !someone_between(in)) {
+    fill_oncoming_lane(in, out);
     return;
   }
   const double out_of_sight_m = setting_.window.inner_ahead_m + setting_.director.hidden_margin_m;
@@ -164,6 +175,78 @@ void PlayRun::open_oncoming_gap(const PlayInput& in, PlayOutput& out) {
     in.available[i] = false;
     command(v.id, withdrawn(), in.step, out);
   }
+}
+
+double PlayRun::actors_ahead_in_view_m(const PlayInput& in) const {
+  const int dir = sign(in.ego.direction);
+  double farthest_m = -1.0;
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
+    const PlayRoleConfig& rc = staged_.roles[r];
+    if (rc.direction != Direction::kForward || rc.lane_offset != 0 || rc.ahead_m <= 0.0) continue;
+    const ObservedVehicle* a = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    if (a == nullptr) return -1.0;
+    const double ahead = dir * (a->s_m - in.ego.s_m);
+    if (ahead <= 0.0 || ahead >= setting_.window.inner_ahead_m) return -1.0;
+    farthest_m = std::max(farthest_m, ahead);
+  }
+  return farthest_m;
+}
+
+bool PlayRun::someone_passing_behind(const PlayInput& in, double actor_ahead_m) const {
+  const int dir = sign(in.ego.direction);
+  const int lanes = setting_.lanes.of(in.ego.direction);
+  return std::any_of(in.world.begin(), in.world.end(), [&](const ObservedVehicle& v) {
+    const double ahead = dir * (v.s_m - in.ego.s_m);
+    const bool passing = v.lane >= lanes || v.target_lane >= lanes;
+    return v.direction == in.ego.direction && passing && ahead > -setting_.window.inner_behind_m &&
+           ahead < actor_ahead_m + kPassedBeyond_m;
+  });
+}
+
+bool PlayRun::oncoming_near_sight(const PlayInput& in, double sight_m) const {
+  const int dir = sign(in.ego.direction);
+  auto near = [&](double s_m) { return std::abs(dir * (s_m - in.ego.s_m) - sight_m) < kFillSpacing_m; };
+  const bool seen = std::any_of(in.world.begin(), in.world.end(), [&](const ObservedVehicle& v) {
+    return v.direction != in.ego.direction && near(v.s_m);
+  });
+  // Vehicles created before and not published yet count where they would be now.
+  return seen || std::any_of(fillers_.begin(), fillers_.end(), [&](const Filler& f) {
+           return near(f.s_m - dir * f.speed_mps * (in.ego.time_s - f.time_s));
+         });
+}
+
+void PlayRun::fill_oncoming_lane(const PlayInput& in, PlayOutput& out) {
+  const int own_lanes = setting_.lanes.of(in.ego.direction);
+  if (in.ego.lane >= own_lanes || in.ego.target_lane >= own_lanes) return;  // the ego passes
+  const double actor_ahead_m = actors_ahead_in_view_m(in);
+  if (actor_ahead_m <= 0.0 || someone_between(in) || someone_passing_behind(in, actor_ahead_m)) return;
+  fillers_.erase(std::remove_if(fillers_.begin(), fillers_.end(),
+                                [&](const Filler& f) {
+                                  return find(in, f.id) != nullptr || in.ego.time_s - f.time_s > kFillerMemory_s;
+                                }),
+                 fillers_.end());
+  const double sight_m = setting_.window.inner_ahead_m + setting_.director.hidden_margin_m;
+  if (oncoming_near_sight(in, sight_m)) return;
+  // A car of the play's first oncoming role, at the speed of the oncoming traffic ahead of the ego
+  // (or that role's start speed).
+  const int dir = sign(in.ego.direction);
+  const auto role = std::find_if(staged_.roles.begin(), staged_.roles.end(),
+                                 [](const PlayRoleConfig& rc) { return rc.direction != Direction::kForward; });
+  double speed_sum = 0.0;
+  int speed_count = 0;
+  for (const ObservedVehicle& v : in.world) {
+    if (v.direction == in.ego.direction || dir * (v.s_m - in.ego.s_m) <= 0.0) continue;
+    speed_sum += v.speed_mps;
+    ++speed_count;
+  }
+  if (speed_count == 0 && role == staged_.roles.end()) return;
+  const double speed = speed_count > 0 ? speed_sum / speed_count : start_speed_mps(*role, in.ego.speed_mps);
+  const int type = role != staged_.roles.end() ? std::max(role->type_index, 0) : 0;
+  const Direction oncoming = in.ego.direction == Direction::kForward ? Direction::kBackward : Direction::kForward;
+  const double s_m = in.ego.s_m + dir * (sight_m + kFillBeyondSight_m);
+  Vehicle v = in.factory.make(type, oncoming, 0, s_m, speed);
+  fillers_.push_back({v.id, s_m, speed, in.ego.time_s});
+  out.created.push_back({std::move(v), Region::kOuterFront});
 }
 
 void PlayRun::hold_followers(const PlayInput& in, PlayOutput& out) {
