@@ -23,6 +23,7 @@ inline constexpr VehicleId kDirectorFirstVehicleId = 0x80000000u;
 enum class Direction : std::int8_t { kForward = 1, kBackward = -1 };
 
 inline int sign(Direction d) { return static_cast<int>(d); }
+inline Direction opposite(Direction d) { return d == Direction::kForward ? Direction::kBackward : Direction::kForward; }
 // 0 for the ego's direction, 1 for the oncoming one: an index into per-direction arrays.
 inline std::size_t dir_index(Direction d) { return d == Direction::kForward ? 0 : 1; }
 inline const char* to_string(Direction d) { return d == Direction::kForward ? "forward" : "backward"; }

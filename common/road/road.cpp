@@ -47,7 +47,7 @@ Road::Road(const RoadConfig& config) : config_(config) {
 
 double Road::lane_center_d(Direction dir, int lane) const {
   if (lane >= lanes(dir)) {  // the oncoming carriageway (an overtaking vehicle)
-    const Direction opp = dir == Direction::kForward ? Direction::kBackward : Direction::kForward;
+    const Direction opp = opposite(dir);
     return lane_center_d(opp, lanes(opp) - 1 - (lane - lanes(dir)));
   }
   const double w = config_.lane_width_m;

@@ -75,7 +75,7 @@ int LaneIndex::slots(Direction dir) const {
 }
 
 int LaneIndex::opposite_slot(Direction dir, int lane_no) const {
-  const Direction opp = dir == Direction::kForward ? Direction::kBackward : Direction::kForward;
+  const Direction opp = opposite(dir);
   const int own = lanes(dir);
   const int other = lanes(opp);
   if (lane_no < 0 || lane_no >= own + other) return -1;
@@ -87,7 +87,7 @@ int LaneIndex::opposite_slot(Direction dir, int lane_no) const {
 const Occupant* LaneIndex::oncoming(Direction dir, int lane_no, double progress_m) const {
   const int opp_slot = opposite_slot(dir, lane_no);
   if (opp_slot < 0) return nullptr;
-  const Direction opp = dir == Direction::kForward ? Direction::kBackward : Direction::kForward;
+  const Direction opp = opposite(dir);
   // Ahead of us in our sense is behind -progress in theirs: the nearest is their follower there.
   return follower(opp, opp_slot, -progress_m, kNoVehicle);
 }

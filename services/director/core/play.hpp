@@ -158,6 +158,11 @@ class PlayRun {
   // too, and passed the truck in it or came early.
   void open_oncoming_gap(const PlayInput& in, PlayOutput& out);
   bool someone_between(const PlayInput& in) const;
+  // A role whose start is ahead of the ego in the ego's lane (the truck).
+  static bool ahead_in_ego_lane(const PlayRoleConfig& rc);
+  // How far ahead of the ego the driver's sight ends for the director: hidden_margin_m beyond the
+  // inner region, where it creates and takes off vehicles.
+  double sight_edge_m() const { return setting_.window.inner_ahead_m + setting_.director.hidden_margin_m; }
   // Once the gap is closed (or was never needed) and the ego is behind every such actor with
   // nobody between, the oncoming lane is kept busy out of sight until the handover: where no
   // oncoming vehicle is within kFillSpacing_m of the driver's sight (hidden_margin_m beyond the

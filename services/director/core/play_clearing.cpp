@@ -138,6 +138,10 @@ bool PlayRun::opens_oncoming_gap(const PlayInput& in) const {
   return setting_.director.oncoming_gap_m > 0.0 && zone_ahead_on_one_lane(in);
 }
 
+bool PlayRun::ahead_in_ego_lane(const PlayRoleConfig& rc) {
+  return rc.direction == Direction::kForward && rc.lane_offset == 0 && rc.ahead_m > 0.0;
+}
+
 bool PlayRun::someone_between(const PlayInput& in) const {
   // The roles ahead of the ego in its lane at the start (the truck): an actor not cast yet, or a
   // vehicle of the ego's direction between the ego and its actor now, unless it is already
@@ -145,16 +149,15 @@ bool PlayRun::someone_between(const PlayInput& in) const {
   const int dir = sign(in.ego.direction);
   const double ego_p = dir * in.ego.s_m;
   for (std::size_t r = 0; r < roles_.size(); ++r) {
-    const PlayRoleConfig& rc = staged_.roles[r];
-    if (rc.direction != Direction::kForward || rc.lane_offset != 0 || rc.ahead_m <= 0.0) continue;
+    if (!ahead_in_ego_lane(staged_.roles[r])) continue;
     const ObservedVehicle* a = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
     if (a == nullptr) return true;
     const double a_p = dir * a->s_m;
     for (const ObservedVehicle& v : in.world) {
       const double p = dir * v.s_m;
-      const int lanes = setting_.lanes.of(v.direction);
-      const bool passing = v.lane >= lanes || v.target_lane >= lanes;
-      if (v.id != a->id && v.direction == in.ego.direction && p > ego_p && p < a_p && !passing) return true;
+      if (v.id != a->id && v.direction == in.ego.direction && p > ego_p && p < a_p && !passing(v, setting_.lanes)) {
+        return true;
+      }
     }
   }
   return false;
@@ -168,7 +171,7 @@ void PlayRun::open_oncoming_gap(const PlayInput& in, PlayOutput& out) {
     fill_oncoming_lane(in, out);
     return;
   }
-  const double out_of_sight_m = setting_.window.inner_ahead_m + setting_.director.hidden_margin_m;
+  const double out_of_sight_m = sight_edge_m();
   for (std::size_t i = 0; i < in.world.size(); ++i) {
     const ObservedVehicle& v = in.world[i];
     if (!in.available[i] || v.direction == in.ego.direction || dir * (v.s_m - in.ego.s_m) <= out_of_sight_m) continue;
@@ -181,8 +184,7 @@ double PlayRun::actors_ahead_in_view_m(const PlayInput& in) const {
   const int dir = sign(in.ego.direction);
   double farthest_m = -1.0;
   for (std::size_t r = 0; r < roles_.size(); ++r) {
-    const PlayRoleConfig& rc = staged_.roles[r];
-    if (rc.direction != Direction::kForward || rc.lane_offset != 0 || rc.ahead_m <= 0.0) continue;
+    if (!ahead_in_ego_lane(staged_.roles[r])) continue;
     const ObservedVehicle* a = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
     if (a == nullptr) return -1.0;
     const double ahead = dir * (a->s_m - in.ego.s_m);
@@ -194,11 +196,9 @@ double PlayRun::actors_ahead_in_view_m(const PlayInput& in) const {
 
 bool PlayRun::someone_passing_behind(const PlayInput& in, double actor_ahead_m) const {
   const int dir = sign(in.ego.direction);
-  const int lanes = setting_.lanes.of(in.ego.direction);
   return std::any_of(in.world.begin(), in.world.end(), [&](const ObservedVehicle& v) {
     const double ahead = dir * (v.s_m - in.ego.s_m);
-    const bool passing = v.lane >= lanes || v.target_lane >= lanes;
-    return v.direction == in.ego.direction && passing && ahead > -setting_.window.inner_behind_m &&
+    return v.direction == in.ego.direction && passing(v, setting_.lanes) && ahead > -setting_.window.inner_behind_m &&
            ahead < actor_ahead_m + kPassedBeyond_m;
   });
 }
@@ -216,8 +216,7 @@ bool PlayRun::oncoming_near_sight(const PlayInput& in, double sight_m) const {
 }
 
 void PlayRun::fill_oncoming_lane(const PlayInput& in, PlayOutput& out) {
-  const int own_lanes = setting_.lanes.of(in.ego.direction);
-  if (in.ego.lane >= own_lanes || in.ego.target_lane >= own_lanes) return;  // the ego passes
+  if (passing(in.ego, setting_.lanes)) return;
   const double actor_ahead_m = actors_ahead_in_view_m(in);
   if (actor_ahead_m <= 0.0 || someone_between(in) || someone_passing_behind(in, actor_ahead_m)) return;
   fillers_.erase(std::remove_if(fillers_.begin(), fillers_.end(),
@@ -225,7 +224,7 @@ void PlayRun::fill_oncoming_lane(const PlayInput& in, PlayOutput& out) {
                                   return find(in, f.id) != nullptr || in.ego.time_s - f.time_s > kFillerMemory_s;
                                 }),
                  fillers_.end());
-  const double sight_m = setting_.window.inner_ahead_m + setting_.director.hidden_margin_m;
+  const double sight_m = sight_edge_m();
   if (oncoming_near_sight(in, sight_m)) return;
   // A car of the play's first oncoming role, at the speed of the oncoming traffic ahead of the ego
   // (or that role's start speed).
@@ -242,9 +241,8 @@ void PlayRun::fill_oncoming_lane(const PlayInput& in, PlayOutput& out) {
   if (speed_count == 0 && role == staged_.roles.end()) return;
   const double speed = speed_count > 0 ? speed_sum / speed_count : start_speed_mps(*role, in.ego.speed_mps);
   const int type = role != staged_.roles.end() ? std::max(role->type_index, 0) : 0;
-  const Direction oncoming = in.ego.direction == Direction::kForward ? Direction::kBackward : Direction::kForward;
   const double s_m = in.ego.s_m + dir * (sight_m + kFillBeyondSight_m);
-  Vehicle v = in.factory.make(type, oncoming, 0, s_m, speed);
+  Vehicle v = in.factory.make(type, opposite(in.ego.direction), 0, s_m, speed);
   fillers_.push_back({v.id, s_m, speed, in.ego.time_s});
   out.created.push_back({std::move(v), Region::kOuterFront});
 }

@@ -167,6 +167,14 @@ bool occupies(const EgoObservation& ego, Direction dir, int lane) {
   return ego.direction == dir && (ego.lane == lane || ego.target_lane == lane);
 }
 
+bool passing(const ObservedVehicle& v, const Lanes& lanes) {
+  return v.lane >= lanes.of(v.direction) || v.target_lane >= lanes.of(v.direction);
+}
+
+bool passing(const EgoObservation& ego, const Lanes& lanes) {
+  return ego.lane >= lanes.of(ego.direction) || ego.target_lane >= lanes.of(ego.direction);
+}
+
 Between between(const Slot& slot, VehicleId self, double s_m, double time_s, const std::vector<ObservedVehicle>& world,
                 const EgoObservation& ego, double ego_s_at_handover_m) {
   const int dir = sign(slot.direction);

@@ -155,5 +155,9 @@ LeaderAhead leader_ahead(const EgoObservation& ego, const ObservedVehicle& leade
 // lane)?
 bool occupies(const ObservedVehicle& v, Direction dir, int lane);
 bool occupies(const EgoObservation& ego, Direction dir, int lane);
+// Is `v` (or the ego) passing: in an oncoming lane (a lane index beyond its direction's lanes), or
+// moving into one?
+bool passing(const ObservedVehicle& v, const Lanes& lanes);
+bool passing(const EgoObservation& ego, const Lanes& lanes);
 
 }  // namespace entourage::director
