@@ -42,11 +42,7 @@ std::size_t apply_commands(Fleet& fleet, const std::vector<ActorCommand>& comman
   return n;
 }
 
-bool Fleet::owns(VehicleId id) const {
-  Vehicle probe;
-  probe.id = id;
-  return std::binary_search(vehicles_.begin(), vehicles_.end(), probe, by_id);
-}
+bool Fleet::owns(VehicleId id) const { return find(id) != nullptr; }
 
 std::size_t adopt_handoffs(Fleet& fleet, HandoffInbox& inbox, std::vector<Handoff> handoffs, Step step, double dt_s,
                            std::vector<VehicleId>* joined) {

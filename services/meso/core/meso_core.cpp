@@ -296,14 +296,14 @@ StepOutput MesoCore::hand_off(const StepInput& in) {
   // One pass in id order, so both the states and the handoffs come out in id order. Vehicles of the
   // ego's direction leaving ahead go on in the generator's front zone (they are the traffic ahead of
   // the window; published once more, outside); others leaving the window retire (not published).
-  bool someone_leaves = false;
+  std::vector<VehicleId> leaving;  // in id order
   for (const Vehicle& v : fleet_.vehicles()) {
     const Fate fate = fate_of(v, w);
     const Region r = fate == Fate::kToFrontZone ? Region::kOutside : w.region_of(v.s_m);
     const bool gone = fate == Fate::kRetires || fate == Fate::kTakenOff;
     if (!gone) out.states.emplace_back(v, r);
     if (fate == Fate::kStays) continue;
-    someone_leaves = true;
+    leaving.push_back(v.id);
     Handoff h;
     switch (fate) {
       case Fate::kToFrontZone:
@@ -330,10 +330,9 @@ StepOutput MesoCore::hand_off(const StepInput& in) {
     inbox_.note_sent(h);
     out.handoffs.push_back(std::move(h));
   }
-  if (someone_leaves) {
-    for (const Vehicle& v : fleet_.extract_if([&](const Vehicle& v) { return fate_of(v, w) != Fate::kStays; })) {
-      equilibrium_.erase(v.id);
-    }
+  if (!leaving.empty()) {
+    const auto leaves = [&leaving](const Vehicle& v) { return std::binary_search(leaving.begin(), leaving.end(), v.id); };
+    for (const Vehicle& v : fleet_.extract_if(leaves)) equilibrium_.erase(v.id);
   }
   return out;
 }

@@ -94,6 +94,18 @@ inline double guard_accel_mps2(double speed_mps, double gap_m, double leader_spe
   return bound;
 }
 
+// A cheap test that guard_accel_mps2 is at least `accel_mps2`, so that most plans (a leader far
+// enough ahead) skip its loop: the room at step i is at least the gap less the floor and the
+// distance covered at the present speed over the whole horizon (the leader's own travel is never
+// negative), and a positive rate needs at most its value times dt^2 n (n + 1) / 2 by the last step.
+// (A small margin keeps rounding in the loop from deciding otherwise.)
+inline bool guard_cannot_bind(double accel_mps2, double speed_mps, double gap_m, double floor_m, const PlanHorizon& h) {
+  constexpr double kRoundingMargin_m = 1e-6;
+  const double n = h.steps;
+  const double least_room_m = gap_m - floor_m - n * h.dt_s * speed_mps;
+  return least_room_m >= std::max(0.0, accel_mps2) * h.dt_s * h.dt_s * n * (n + 1) / 2.0 + kRoundingMargin_m;
+}
+
 // `desired_speed_mps`: the driver's desired speed at its place (speed adaptation, look-ahead).
 inline MesoSpeed next_speed(const Vehicle& v, const EquilibriumSpeed& eq, const Ahead& ahead, double desired_speed_mps,
                             const PlanHorizon& h, const MesoModelParams& m = {}) {
@@ -131,7 +143,7 @@ inline MesoSpeed next_speed(const Vehicle& v, const EquilibriumSpeed& eq, const 
   }
   next = std::max(0.0, next);
   const MesoSpeed out{next, (next - v.speed_mps) / t, false};
-  if (!led) return out;
+  if (!led || guard_cannot_bind(out.accel_mps2, v.speed_mps, ahead.gap_m, m.floor_gap_m, h)) return out;
   const double guard = guard_accel_mps2(v.speed_mps, ahead.gap_m, ahead.leader_speed_mps, m.leader_brake_limit_mps2,
                                         m.floor_gap_m, h);
   if (guard >= out.accel_mps2) return out;
