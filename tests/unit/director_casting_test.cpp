@@ -118,6 +118,13 @@ TEST(Casting, OnOneLaneAVehicleWithAnotherBetweenItAndTheEgoCannotPlayARoleBehin
   gap.oncoming_gap = true;
   EXPECT_FALSE(stuck_between(slot, world[0].s_m, world[0].id, gap));
   EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], world[0], gap, cfg)));
+  // Unless vehicle 2's drivers never overtake (a truck): the gap does not get it out.
+  CastingSituation gap_truck = gap;
+  gap_truck.type_overtakes = {false};
+  EXPECT_TRUE(stuck_between(slot, world[0].s_m, world[0].id, gap_truck));
+  EXPECT_EQ(casting_cost(slot, play.roles[0], world[0], gap_truck, cfg), kInf);
+  gap_truck.type_overtakes = {true};
+  EXPECT_FALSE(stuck_between(slot, world[0].s_m, world[0].id, gap_truck));
   // Nor is a vehicle created out of sight beyond vehicle 2 any better (20 s to go: a place ahead
   // is found without the zone, none with it).
   ScenarioConfig sc = testing::road_scenario(1, 1);

@@ -320,7 +320,8 @@ TEST(Aim, FarFromTheStartActorsAimAtTriggerPoint2NearItAShortHorizonAhead) {
   EXPECT_DOUBLE_EQ(near.ego_s_m, 3000.0);  // 2900 + 25 m/s x 4 s
   EXPECT_DOUBLE_EQ(near.past_start_s, 3.0);
   // A role slower than the ego by 5 m/s stands 40 m ahead at the start, 25 m ahead 3 s later; an
-  // oncoming one at 20 m/s comes 45 m/s closer each second.
+  // oncoming one at 20 m/s comes 45 m/s closer each second, and is aimed half its position
+  // tolerance (50 m) beyond its start: late rather than early, the handover may wait for it.
   PlayConfig play = lead_play();
   play.roles[0].speed_mps = -5.0;
   PlayRoleConfig oncoming;
@@ -329,11 +330,18 @@ TEST(Aim, FarFromTheStartActorsAimAtTriggerPoint2NearItAShortHorizonAhead) {
   oncoming.ahead_m = 300.0;
   oncoming.absolute_speed = true;
   oncoming.speed_mps = 20.0;
+  oncoming.position_tolerance_m = 50.0;
   play.roles.push_back(oncoming);
   const std::vector<Slot> slots = slots_of(play, Direction::kForward, 0, near, Lanes{1, 1});
   EXPECT_DOUBLE_EQ(slots[0].s_m, 3000.0 + 40.0 - 5.0 * 3.0);
   EXPECT_DOUBLE_EQ(slots[0].speed_mps, 20.0);
-  EXPECT_DOUBLE_EQ(slots[1].s_m, 3000.0 + 300.0 - 45.0 * 3.0);
+  EXPECT_DOUBLE_EQ(slots[1].s_m, 3000.0 + 300.0 + 25.0 - 45.0 * 3.0);
+  // For an ego driving the other way, beyond its start the other way.
+  const Aim at_start{10.0, 3000.0, 25.0, 0.0};
+  const std::vector<Slot> other = slots_of(play, Direction::kBackward, 0, at_start, Lanes{1, 1});
+  EXPECT_DOUBLE_EQ(other[0].s_m, 3000.0 - 40.0);
+  EXPECT_DOUBLE_EQ(other[1].s_m, 3000.0 - 300.0 - 25.0);
+  EXPECT_EQ(other[1].direction, Direction::kForward);
 }
 
 }  // namespace

@@ -66,7 +66,7 @@ bool gap_is_free(const Slot& slot, double s_m, double length_m, double speed_mps
 }  // namespace
 
 bool stuck_between(const Slot& slot, double s_m, VehicleId self, const CastingSituation& at) {
-  if (at.oncoming_gap || at.lanes.of(slot.direction) > 1 || at.ego.direction != slot.direction) return false;
+  if (at.lanes.of(slot.direction) > 1 || at.ego.direction != slot.direction) return false;
   const int dir = sign(slot.direction);
   const double ego_then_p = dir * at.ego_s_at_handover_m;
   const double slot_p = dir * slot.s_m;
@@ -82,6 +82,7 @@ bool stuck_between(const Slot& slot, double s_m, VehicleId self, const CastingSi
   const double p = dir * s_m;
   return std::any_of(at.world.begin(), at.world.end(), [&](const ObservedVehicle& v) {
     if (v.id == self || !occupies(v, slot.direction, slot.lane)) return false;
+    if (at.oncoming_gap && overtakes_of(at.type_overtakes, v.type_index)) return false;  // may pass it in the gap
     const double q = dir * v.s_m;
     return q > ego_p && q < p;
   });

@@ -30,6 +30,7 @@ struct CastingSituation {
   TypeAccels type_accel_mps2;
   std::vector<ZoneAtStart> zones = {};  // the play's clear zones at the start (the ego then)
   bool oncoming_gap = false;  // the play opens a gap in the oncoming traffic (play.hpp, open_oncoming_gap)
+  TypeOvertakes type_overtakes = {};
 };
 
 // On one lane per direction nothing gets out from between the ego and a vehicle ahead of it (actors
@@ -37,7 +38,11 @@ struct CastingSituation {
 // is still between them at the start. Where a clear zone of the slot's lane lies between the ego
 // and a slot ahead of it then, a vehicle at `s_m` with any other vehicle between it and the ego
 // cannot play the role (the play would fail on that vehicle in the zone). Unless the play opens a
-// gap in the oncoming traffic (`at.oncoming_gap`), in which the vehicles between may pass it.
+// gap in the oncoming traffic (`at.oncoming_gap`), in which the vehicles between may pass it: then
+// only a vehicle whose driver never overtakes (a truck) is stuck there. (A truck created out of
+// sight beyond two trucks of the traffic was cast before one of them that needed the right speed,
+// and the play failed on them, or on the ego passing the whole queue in the gap: slow truck, seed
+// 27, stop 43.)
 bool stuck_between(const Slot& slot, double s_m, VehicleId self, const CastingSituation& at);
 
 // The cost of `v` playing a role with start `slot` (infinite: it cannot).

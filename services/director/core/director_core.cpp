@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "behaviour/model_registry.hpp"
 #include "traffic/driver_draw.hpp"
 
 namespace entourage::director {
@@ -31,9 +32,13 @@ Vehicle DirectorCore::Factory::make(int type_index, Direction dir, int lane, dou
 DirectorCore::DirectorCore(const ScenarioConfig& scenario, std::uint64_t seed)
     : scenario_(scenario), factory_(scenario_, seed) {
   TypeAccels accels;
-  for (const VehicleTypeConfig& t : scenario_.vehicle_types) accels.push_back(t.driver.max_accel_mps2.mean);
+  TypeOvertakes overtake;
+  for (const VehicleTypeConfig& t : scenario_.vehicle_types) {
+    accels.push_back(t.driver.max_accel_mps2.mean);
+    overtake.push_back(lane_change_model_by_name(t.driver.lane_change) == LaneChangeModel::kOvertaking);
+  }
   const PlaySetting setting{scenario_.director, scenario_.window,
-                            Lanes{scenario_.road.lanes_forward, scenario_.road.lanes_backward}, accels};
+                            Lanes{scenario_.road.lanes_forward, scenario_.road.lanes_backward}, accels, overtake};
   for (const PlayConfig& p : scenario_.plays) plays_.emplace_back(p, setting);
 }
 

@@ -282,7 +282,8 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
                             aim.time_s,     aim.ego_s_m,
                             setting_.lanes, setting_.type_accel_mps2,
                             zones_of(staged_, in.ego.direction, staged_lane(in), aim.ego_s_m, setting_.lanes),
-                            opens_oncoming_gap(in)};
+                            opens_oncoming_gap(in),
+                            setting_.type_overtakes};
   // Only the roles still without an actor are cast; the others keep theirs. Each is cast for where
   // its way leads first (way_to: a cutter waits ahead of its start until the approach), as
   // move_actors will move it: cast or created for its start instead, a cutter from behind had

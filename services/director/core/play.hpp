@@ -94,6 +94,7 @@ struct PlaySetting {
   WindowConfig window;
   Lanes lanes;
   TypeAccels type_accel_mps2;
+  TypeOvertakes type_overtakes = {};
 };
 
 class PlayRun {

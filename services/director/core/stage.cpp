@@ -67,7 +67,8 @@ std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int 
     s.speed_mps = start_speed_mps(r, aim.ego_speed_mps);
     // Along the ego's direction: an oncoming role's start speed takes it the other way.
     const double relative_mps = sign(s.direction) * sign(ego_direction) * s.speed_mps - aim.ego_speed_mps;
-    s.s_m = aim.ego_s_m + sign(ego_direction) * (r.ahead_m + relative_mps * aim.past_start_s);
+    const double late_m = s.direction == ego_direction ? 0.0 : kOncomingLateShare * r.position_tolerance_m;
+    s.s_m = aim.ego_s_m + sign(ego_direction) * (r.ahead_m + late_m + relative_mps * aim.past_start_s);
     out.push_back(s);
   }
   return out;

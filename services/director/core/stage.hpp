@@ -34,6 +34,13 @@ inline double accel_of(const TypeAccels& a, std::uint8_t type_index) {
   return type_index < a.size() ? a[type_index] : 0.0;
 }
 
+// Whether each vehicle type's drivers overtake in the oncoming lane (lane_change "overtaking");
+// a type not listed is taken to.
+using TypeOvertakes = std::vector<bool>;
+inline bool overtakes_of(const TypeOvertakes& o, std::uint8_t type_index) {
+  return type_index >= o.size() || o[type_index];
+}
+
 // The lane of the ego's direction a play is staged beside: the lane the ego is in or moving to,
 // or, while it overtakes in an oncoming lane (a lane index beyond its direction's lanes), the
 // lane of its own direction nearest to it, where it comes back (a staging that followed it out
@@ -67,6 +74,12 @@ Aim aim_of(double time_to_start_s, double trigger2_s_m, double speed_at_start_mp
 // A role's start speed with the ego at `ego_speed_mps`: its own (absolute), or the ego's plus its
 // offset, never below standing.
 double start_speed_mps(const PlayRoleConfig& role, double ego_speed_mps);
+
+// An oncoming role's slot lies this share of its position tolerance beyond its start. It closes
+// on the ego at the sum of both speeds, so an ego a second later than estimated finds it some
+// 20 m too close; the handover may wait for one that is still too far (handover_wait_s), never
+// for one already too close. Where the ego comes as estimated, the actor is within its tolerance.
+inline constexpr double kOncomingLateShare = 0.5;
 
 // The slots of `play`'s roles at `aim`, the ego in `ego_lane`. A role stands `ahead_m` from the
 // ego at the start and drives on at its start speed: at a time past the start it is that much
