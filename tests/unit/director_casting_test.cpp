@@ -136,6 +136,39 @@ TEST(Casting, OnOneLaneAVehicleWithAnotherBetweenItAndTheEgoCannotPlayARoleBehin
   EXPECT_FALSE(hidden_placement(slot, 4.5, create_zoned, w, cfg).has_value());
 }
 
+TEST(Casting, OnOneLaneATruckAheadOfTheEgoMayPlayThoughItsPlanMissesByMoreThanAnotherMay) {
+  // A truck of the traffic ahead of the ego stays between the ego and any place beyond it: where it
+  // fits the role it is the only actor possible, and may miss by up to two tolerances.
+  PlayConfig play = lead_play();
+  play.roles[0].type_index = 1;
+  DirectorConfig cfg;
+  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
+  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), Lanes{1, 1})[0];
+  ObservedVehicle truck = vehicle(1, 2280.0, 25.0);
+  truck.type_index = 1;
+  const std::vector<ObservedVehicle> world = {vehicle(2, 2280.0, 25.0), truck};
+  CastingSituation at{world, ego, 40.0, 3000.0, Lanes{1, 1}, {}};
+  at.oncoming_gap = true;
+  // 280 m ahead with 40 s to go, its best plan (the band's low edge, 17 m/s) leaves it 11 m beyond
+  // the slot, more than half the role's 10 m tolerance.
+  at.type_overtakes = {true, true};
+  EXPECT_EQ(casting_cost(slot, play.roles[0], truck, at, cfg), kInf);
+  at.type_overtakes = {true, false};
+  EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], truck, at, cfg)));
+  // Not 31 m beyond it, nor with a second lane to get past it by.
+  ObservedVehicle farther = truck;
+  farther.s_m = 2300.0;
+  EXPECT_EQ(casting_cost(slot, play.roles[0], farther, at, cfg), kInf);
+  CastingSituation two_lanes = at;
+  two_lanes.lanes = Lanes{2, 0};
+  EXPECT_EQ(casting_cost(slot, play.roles[0], truck, two_lanes, cfg), kInf);
+  // Where nothing can be created, the cheapest vehicle that fits plays (the car does not fit a
+  // truck's role), unless it is taken or unavailable.
+  EXPECT_EQ(cheapest_fit(slot, play.roles[0], {true, true}, at, {-1}, cfg), 1);
+  EXPECT_EQ(cheapest_fit(slot, play.roles[0], {true, true}, at, {1}, cfg), -1);
+  EXPECT_EQ(cheapest_fit(slot, play.roles[0], {true, false}, at, {-1}, cfg), -1);
+}
+
 TEST(Casting, NewVehiclesAreCreatedOutOfSightWithASafeGap) {
   const PlayConfig play = lead_play();
   DirectorConfig cfg;

@@ -59,6 +59,12 @@ std::vector<int> cast_roles(const std::vector<Slot>& slots, const std::vector<Pl
                             const std::vector<bool>& available, const std::vector<CastingSituation>& at_role,
                             const DirectorConfig& cfg);
 
+// The index in the world of the available vehicle, other than those in `taken` (world indices, -1:
+// none), that plays the role at the lowest finite cost; -1 if none can. For a role that cast_roles
+// left to a creation where no vehicle can be created (hidden_placement finds no place).
+int cheapest_fit(const Slot& slot, const PlayRoleConfig& role, const std::vector<bool>& available,
+                 const CastingSituation& at, const std::vector<int>& taken, const DirectorConfig& cfg);
+
 // Where to create a vehicle of length `length_m` for `slot`: out of sight (an outer region, at
 // least hidden_margin_m beyond the inner region), from where it reaches the slot in time at a
 // speed inside the transport band, with a safe gap to its neighbours in the slot's lane.

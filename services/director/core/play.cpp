@@ -311,7 +311,7 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
   for (std::size_t i = 0; i < in.world.size(); ++i) {
     if (is_cleared(in.world[i].id)) castable[i] = true;
   }
-  const std::vector<int> chosen = cast_roles(sub_slots, sub_roles, castable, sub_at, setting_.director);
+  std::vector<int> chosen = cast_roles(sub_slots, sub_roles, castable, sub_at, setting_.director);
   const WindowBounds window = WindowBounds::around(in.ego.s_m, setting_.window);
   std::string detail;
   for (std::size_t k = 0; k < open.size(); ++k) {
@@ -323,6 +323,14 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
       command(role.actor, ActorControl{}, in.step, out);
       sent_.erase(role.actor);
     };
+    const int type = rc.type_index >= 0 ? rc.type_index : 0;
+    const auto place = chosen[k] >= 0 ? std::nullopt
+                                      : hidden_placement(sub_slots[k], in.factory.length_m(type), sub_at[k], window,
+                                                         setting_.director);
+    // Nowhere to create one: the vehicle of the traffic that fits best, if any, though a creation
+    // would have cost less (a truck of the traffic ahead of the ego on one lane per direction, with
+    // cars between that will pass it, leaves no place beyond it).
+    if (chosen[k] < 0 && !place) chosen[k] = cheapest_fit(sub_slots[k], sub_roles[k], castable, sub_at[k], chosen, setting_.director);
     if (chosen[k] >= 0) {
       replace();
       const ObservedVehicle& v = in.world[static_cast<std::size_t>(chosen[k])];
@@ -333,8 +341,6 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
       detail += (detail.empty() ? "" : ", ") + rc.name + " = vehicle " + std::to_string(v.id);
       continue;
     }
-    const int type = rc.type_index >= 0 ? rc.type_index : 0;
-    const auto place = hidden_placement(sub_slots[k], in.factory.length_m(type), sub_at[k], window, setting_.director);
     if (!place) continue;  // tried again at the next casting
     replace();
     Vehicle v = in.factory.make(type, sub_slots[k].direction, sub_slots[k].lane, place->s_m, place->speed_mps);
