@@ -327,10 +327,14 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
     const auto place = chosen[k] >= 0 ? std::nullopt
                                       : hidden_placement(sub_slots[k], in.factory.length_m(type), sub_at[k], window,
                                                          setting_.director);
-    // Nowhere to create one: the vehicle of the traffic that fits best, if any, though a creation
-    // would have cost less (a truck of the traffic ahead of the ego on one lane per direction, with
-    // cars between that will pass it, leaves no place beyond it).
-    if (chosen[k] < 0 && !place) chosen[k] = cheapest_fit(sub_slots[k], sub_roles[k], castable, sub_at[k], chosen, setting_.director);
+    // Nowhere to create one on one lane per direction: the vehicle of the traffic that fits best,
+    // if any, though a creation would have cost less (a truck of the traffic ahead of the ego, with
+    // cars between that will pass it, leaves no place beyond it, and will not later). Where there
+    // are more lanes a place is usually found a moment later (a freeway lead vehicle cast this way
+    // instead held the ego up: seed 31, stop 43).
+    if (chosen[k] < 0 && !place && setting_.lanes.of(sub_slots[k].direction) <= 1) {
+      chosen[k] = cheapest_fit(sub_slots[k], sub_roles[k], castable, sub_at[k], chosen, setting_.director);
+    }
     if (chosen[k] >= 0) {
       replace();
       const ObservedVehicle& v = in.world[static_cast<std::size_t>(chosen[k])];
