@@ -120,10 +120,10 @@ TEST(Casting, OnOneLaneAVehicleWithAnotherBetweenItAndTheEgoCannotPlayARoleBehin
   EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], world[0], gap, cfg)));
   // Unless vehicle 2's drivers never overtake (a truck): the gap does not get it out.
   CastingSituation gap_truck = gap;
-  gap_truck.type_overtakes = {false};
+  gap_truck.types = {{0.0, false}};
   EXPECT_TRUE(stuck_between(slot, world[0].s_m, world[0].id, gap_truck));
   EXPECT_EQ(casting_cost(slot, play.roles[0], world[0], gap_truck, cfg), kInf);
-  gap_truck.type_overtakes = {true};
+  gap_truck.types = {{0.0, true}};
   EXPECT_FALSE(stuck_between(slot, world[0].s_m, world[0].id, gap_truck));
   // Nor is a vehicle created out of sight beyond vehicle 2 any better (20 s to go: a place ahead
   // is found without the zone, none with it).
@@ -151,9 +151,9 @@ TEST(Casting, OnOneLaneATruckAheadOfTheEgoMayPlayThoughItsPlanMissesByMoreThanAn
   at.oncoming_gap = true;
   // 280 m ahead with 40 s to go, its best plan (the band's low edge, 17 m/s) leaves it 11 m beyond
   // the slot, more than half the role's 10 m tolerance.
-  at.type_overtakes = {true, true};
+  at.types = {{0.0, true}, {0.0, true}};
   EXPECT_EQ(casting_cost(slot, play.roles[0], truck, at, cfg), kInf);
-  at.type_overtakes = {true, false};
+  at.types = {{0.0, true}, {0.0, false}};
   EXPECT_TRUE(std::isfinite(casting_cost(slot, play.roles[0], truck, at, cfg)));
   // Not 31 m beyond it, nor with a second lane to get past it by.
   ObservedVehicle farther = truck;

@@ -89,7 +89,7 @@ bool stuck_between(const Slot& slot, double s_m, VehicleId self, const CastingSi
   const double p = dir * s_m;
   return std::any_of(at.world.begin(), at.world.end(), [&](const ObservedVehicle& v) {
     if (v.id == self || !occupies(v, slot.direction, slot.lane)) return false;
-    if (at.oncoming_gap && overtakes_of(at.type_overtakes, v.type_index)) return false;  // may pass it in the gap
+    if (at.oncoming_gap && overtakes_of(at.types, v.type_index)) return false;  // may pass it in the gap
     const double q = dir * v.s_m;
     return q > ego_p && q < p;
   });
@@ -100,11 +100,11 @@ double casting_cost(const Slot& slot, const PlayRoleConfig& role, const Observed
   if (v.direction != slot.direction || !type_fits(role, v) || at.time_to_start_s <= 0.0) return kInf;
   const SpeedPlan plan = plan_speed(v.speed_mps, slot.speed_mps, at.time_to_start_s,
                                     sign(slot.direction) * (slot.s_m - v.s_m), transport_band(slot, cfg),
-                                    transport_rate_mps2(cfg, accel_of(at.type_accel_mps2, v.type_index)));
+                                    transport_rate_mps2(cfg, accel_of(at.types, v.type_index)));
   const bool one_lane = at.lanes.of(slot.direction) <= 1;
   const int dir = sign(slot.direction);
   const bool blocker = one_lane && at.ego.direction == slot.direction && occupies(v, slot.direction, slot.lane) &&
-                       !overtakes_of(at.type_overtakes, v.type_index) && dir * (v.s_m - at.ego.s_m) > 0.0 &&
+                       !overtakes_of(at.types, v.type_index) && dir * (v.s_m - at.ego.s_m) > 0.0 &&
                        dir * (slot.s_m - at.ego_s_at_handover_m) > 0.0;
   if (std::abs(plan.shortfall_m) > (blocker ? kBlockerSlack : kCastingSlack) * role.position_tolerance_m) return kInf;
   const Between b = between(slot, v.id, v.s_m, at.time_to_start_s, at.world, at.ego, at.ego_s_at_handover_m);

@@ -27,10 +27,9 @@ struct CastingSituation {
   double time_to_start_s = 0.0;     // until the aim (stage.hpp: the start, or a short horizon)
   double ego_s_at_handover_m = 0.0; // where the ego is then
   Lanes lanes;
-  TypeAccels type_accel_mps2;
+  TypeTable types;
   std::vector<ZoneAtStart> zones = {};  // the play's clear zones at the start (the ego then)
   bool oncoming_gap = false;  // the play opens a gap in the oncoming traffic (play.hpp, open_oncoming_gap)
-  TypeOvertakes type_overtakes = {};
 };
 
 // On one lane per direction nothing gets out from between the ego and a vehicle ahead of it (actors

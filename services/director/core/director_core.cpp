@@ -31,14 +31,13 @@ Vehicle DirectorCore::Factory::make(int type_index, Direction dir, int lane, dou
 
 DirectorCore::DirectorCore(const ScenarioConfig& scenario, std::uint64_t seed)
     : scenario_(scenario), factory_(scenario_, seed) {
-  TypeAccels accels;
-  TypeOvertakes overtake;
+  TypeTable types;
   for (const VehicleTypeConfig& t : scenario_.vehicle_types) {
-    accels.push_back(t.driver.max_accel_mps2.mean);
-    overtake.push_back(lane_change_model_by_name(t.driver.lane_change) == LaneChangeModel::kOvertaking);
+    types.push_back({t.driver.max_accel_mps2.mean,
+                     lane_change_model_by_name(t.driver.lane_change) == LaneChangeModel::kOvertaking});
   }
   const PlaySetting setting{scenario_.director, scenario_.window,
-                            Lanes{scenario_.road.lanes_forward, scenario_.road.lanes_backward}, accels, overtake};
+                            Lanes{scenario_.road.lanes_forward, scenario_.road.lanes_backward}, types};
   for (const PlayConfig& p : scenario_.plays) plays_.emplace_back(p, setting);
 }
 

@@ -5,7 +5,6 @@
 #include <limits>
 #include <sstream>
 
-#include "director/core/casting.hpp"
 #include "director/core/transport.hpp"
 
 namespace entourage::director {
@@ -276,89 +275,6 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
   if (!cast_detail.empty()) report(in, out, "cast: " + cast_detail);
 }
 
-std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
-                          PlayOutput& out) {
-  const CastingSituation at{in.world,       in.ego,
-                            aim.time_s,     aim.ego_s_m,
-                            setting_.lanes, setting_.type_accel_mps2,
-                            zones_of(staged_, in.ego.direction, staged_lane(in), aim.ego_s_m, setting_.lanes),
-                            opens_oncoming_gap(in),
-                            setting_.type_overtakes};
-  // Only the roles still without an actor are cast; the others keep theirs. Each is cast for where
-  // its way leads first (way_to: a cutter waits ahead of its start until the approach), as
-  // move_actors will move it: cast or created for its start instead, a cutter from behind had
-  // 20 s less and 50 m further to go, missed by far at once and was replaced after 3 s, again and
-  // again.
-  std::vector<std::size_t> open;
-  std::vector<PlayRoleConfig> sub_roles;
-  std::vector<Slot> sub_slots;
-  std::vector<CastingSituation> sub_at;
-  for (std::size_t r = 0; r < roles_.size(); ++r) {
-    if (!this->open(roles_[r], in)) continue;
-    open.push_back(r);
-    sub_roles.push_back(play_.roles[r]);
-    const Waypoint way = way_to(slots[r], aim.time_s, staged_.roles[r], in.ego.direction, staged_lane(in),
-                                time_to_start_s, setting_.director);
-    sub_slots.push_back(way.slot);
-    CastingSituation role_at = at;
-    role_at.time_to_start_s = way.time_s;
-    role_at.ego_s_at_handover_m = aim.ego_s_m - sign(in.ego.direction) * aim.ego_speed_mps * (aim.time_s - way.time_s);
-    sub_at.push_back(role_at);
-  }
-  // Vehicles this play cleared off the stage may be cast too (one in the way of an actor that
-  // cannot get into its lane may be the better actor).
-  std::vector<bool> castable = in.available;
-  for (std::size_t i = 0; i < in.world.size(); ++i) {
-    if (is_cleared(in.world[i].id)) castable[i] = true;
-  }
-  std::vector<int> chosen = cast_roles(sub_slots, sub_roles, castable, sub_at, setting_.director);
-  const WindowBounds window = WindowBounds::around(in.ego.s_m, setting_.window);
-  std::string detail;
-  for (std::size_t k = 0; k < open.size(); ++k) {
-    Role& role = roles_[open[k]];
-    const PlayRoleConfig& rc = play_.roles[open[k]];
-    // An actor that gives its role up drives on as everyday traffic.
-    auto replace = [&] {
-      if (role.actor == kNoVehicle) return;
-      command(role.actor, ActorControl{}, in.step, out);
-      sent_.erase(role.actor);
-    };
-    const int type = rc.type_index >= 0 ? rc.type_index : 0;
-    const auto place = chosen[k] >= 0 ? std::nullopt
-                                      : hidden_placement(sub_slots[k], in.factory.length_m(type), sub_at[k], window,
-                                                         setting_.director);
-    // Nowhere to create one on one lane per direction: the vehicle of the traffic that fits best,
-    // if any, though a creation would have cost less (a truck of the traffic ahead of the ego, with
-    // cars between that will pass it, leaves no place beyond it, and will not later). Where there
-    // are more lanes a place is usually found a moment later (a freeway lead vehicle cast this way
-    // instead held the ego up: seed 31, stop 43).
-    if (chosen[k] < 0 && !place && setting_.lanes.of(sub_slots[k].direction) <= 1) {
-      chosen[k] = cheapest_fit(sub_slots[k], sub_roles[k], castable, sub_at[k], chosen, setting_.director);
-    }
-    if (chosen[k] >= 0) {
-      replace();
-      const ObservedVehicle& v = in.world[static_cast<std::size_t>(chosen[k])];
-      in.available[static_cast<std::size_t>(chosen[k])] = false;
-      cleared_.erase(std::remove(cleared_.begin(), cleared_.end(), v.id), cleared_.end());
-      lane_requests_.erase(v.id);  // an actor now: its lane is the role's, not a clearing request
-      role = Role{v.id, false, in.step, -1.0, 0.0, 0.0};
-      detail += (detail.empty() ? "" : ", ") + rc.name + " = vehicle " + std::to_string(v.id);
-      continue;
-    }
-    if (!place) continue;  // tried again at the next casting
-    replace();
-    Vehicle v = in.factory.make(type, sub_slots[k].direction, sub_slots[k].lane, place->s_m, place->speed_mps);
-    v.control = transported(place->speed_mps, sub_slots[k].lane);
-    sent_[v.id] = v.control;
-    role = Role{v.id, true, in.step, place->speed_mps, 0.0, 0.0};
-    ++created_count_;
-    detail += (detail.empty() ? "" : ", ") + rc.name + " = new vehicle " + std::to_string(v.id) + " (" +
-              to_string(place->region) + ")";
-    out.created.push_back({std::move(v), place->region});
-  }
-  return detail;
-}
-
 void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, double aim_time_s, double time_to_start_s,
                           PlayOutput& out) {
   for (std::size_t r = 0; r < roles_.size(); ++r) {
@@ -366,7 +282,7 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
     if (role.actor == kNoVehicle) continue;
     const ObservedVehicle* v = find(in, role.actor);
     if (v == nullptr) continue;  // a created vehicle not seen yet
-    const double type_accel = accel_of(setting_.type_accel_mps2, v->type_index);
+    const double type_accel = accel_of(setting_.types, v->type_index);
     const double rate = transport_rate_mps2(setting_.director, type_accel);
     const Waypoint way = way_to(slots[r], aim_time_s, staged_.roles[r], in.ego.direction, staged_lane(in),
                                 time_to_start_s, setting_.director);

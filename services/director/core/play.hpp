@@ -93,8 +93,7 @@ struct PlaySetting {
   DirectorConfig director;
   WindowConfig window;
   Lanes lanes;
-  TypeAccels type_accel_mps2;
-  TypeOvertakes type_overtakes = {};
+  TypeTable types;
 };
 
 class PlayRun {

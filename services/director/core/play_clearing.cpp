@@ -82,7 +82,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
     }
     double drive_mps = c.speed_mps;
     if (drive_mps != kOwnDesiredSpeed_mps) {
-      const double type_accel = accel_of(setting_.type_accel_mps2, v.type_index);
+      const double type_accel = accel_of(setting_.types, v.type_index);
       drive_mps = drive_speed_mps(drive_mps, v.speed_mps, transport_rate_mps2(setting_.director, type_accel), type_accel);
     }
     const ActorControl control = transported(drive_mps, c.lane);

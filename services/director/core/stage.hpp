@@ -28,17 +28,19 @@ struct Lanes {
   int of(Direction d) const { return d == Direction::kForward ? forward : backward; }
 };
 
-// The mean maximum acceleration of each vehicle type's drivers (0: unknown).
-using TypeAccels = std::vector<double>;
-inline double accel_of(const TypeAccels& a, std::uint8_t type_index) {
-  return type_index < a.size() ? a[type_index] : 0.0;
+// What the director knows of a vehicle type's drivers (from the scenario's vehicle types), per
+// type index.
+struct TypeTraits {
+  double accel_mps2 = 0.0;  // their mean maximum acceleration (0: unknown)
+  bool overtakes = true;    // they overtake in the oncoming lane (lane_change "overtaking")
+};
+using TypeTable = std::vector<TypeTraits>;
+// A type not in the table: acceleration unknown, and taken to overtake.
+inline double accel_of(const TypeTable& types, std::uint8_t type_index) {
+  return type_index < types.size() ? types[type_index].accel_mps2 : 0.0;
 }
-
-// Whether each vehicle type's drivers overtake in the oncoming lane (lane_change "overtaking");
-// a type not listed is taken to.
-using TypeOvertakes = std::vector<bool>;
-inline bool overtakes_of(const TypeOvertakes& o, std::uint8_t type_index) {
-  return type_index >= o.size() || o[type_index];
+inline bool overtakes_of(const TypeTable& types, std::uint8_t type_index) {
+  return type_index >= types.size() || types[type_index].overtakes;
 }
 
 // The lane of the ego's direction a play is staged beside: the lane the ego is in or moving to,
