@@ -105,6 +105,7 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
   int taken_off = 0, taken_off_in_view = 0;
   int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
   bench::SignalsCalledOff off_commanded, off_autonomous;
+  bench::AboveTopSpeed above_commanded, above_autonomous;
   bench::RightPasses right, right_undirected;
   int runs_right = 0, runs_right_undirected = 0;  // runs in which the ego passed any on the right
   std::map<std::string, int> causes;
@@ -144,6 +145,8 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
     runs_right += r.passed_on_right.total() > 0 ? 1 : 0;
     runs_right_undirected += r.passed_on_right_undirected.total() > 0 ? 1 : 0;
     off_autonomous.add(r.called_off_autonomous);
+    above_commanded.add(r.above_top_commanded);
+    above_autonomous.add(r.above_top_autonomous);
     created += r.created;
     in_view += r.created_in_view;
     taken_off += r.taken_off;
@@ -195,6 +198,11 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
               "  with the director     %d (%d under its command) in %d runs\n"
               "  without the director  %d in %d runs\n",
               right.total(), right.commanded, runs_right, right_undirected.total(), runs_right_undirected);
+  std::printf("faster than any driver of their type wishes (inner region, while preparing)\n"
+              "  commanded   %.1f vehicle-s in %d runs, by at most %.1f km/h\n"
+              "  autonomous  %.1f vehicle-s in %d runs, by at most %.1f km/h\n",
+              above_commanded.vehicle_s, above_commanded.runs, 3.6 * above_commanded.max_excess_mps,
+              above_autonomous.vehicle_s, above_autonomous.runs, 3.6 * above_autonomous.max_excess_mps);
   std::printf("lane changes called off (indicator on, then off in the same lane; inner region, while preparing)\n"
               "  commanded   %d in %.1f vehicle-hours (%.1f per vehicle-hour)\n"
               "  autonomous  %d in %.1f vehicle-hours (%.1f per vehicle-hour)\n",

@@ -273,6 +273,14 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
       }
       last_accel[v.id] = {v.step, v.accel_mps2};
     }
+    // Faster than their type's drivers ever wish (inner region, while preparing).
+    for (const ObservedVehicle& v : world) {
+      if (!preparing || !w.in_inner(v.s_m) || v.type_index >= sc.vehicle_types.size()) continue;
+      if (v.control != ControlMode::kTransported && v.control != ControlMode::kAutonomous) continue;
+      const double excess = v.speed_mps - sc.vehicle_types[v.type_index].driver.desired_speed_mps.max;
+      if (excess <= 0.0) continue;
+      (v.control == ControlMode::kTransported ? r.above_top_commanded : r.above_top_autonomous).add_step(excess, dt);
+    }
     // Indicators on and off again in the same lane (inner region, while preparing).
     for (const ObservedVehicle& v : world) {
       if (!preparing || v.owner.role != Role::kMicro || !w.in_inner(v.s_m) || v.control == ControlMode::kControlled ||

@@ -79,6 +79,24 @@ class RightPassCounter {
   std::map<VehicleId, double> ahead_m_;  // last step's lead over the ego of each vehicle left of it
 };
 
+// Vehicles in view faster than any driver of their type wishes to drive (the scenario's highest
+// desired speed of the type, `desired_speed_kph { max }`): a truck at 108 km/h where trucks wish
+// 95 at most is not everyday traffic, whoever asked it to.
+struct AboveTopSpeed {
+  double vehicle_s = 0.0;       // time vehicles of this kind spent above it
+  double max_excess_mps = 0.0;  // by how much at most
+  int runs = 0;                 // over runs: runs in which any did
+  void add_step(double excess_mps, double dt_s) {
+    vehicle_s += dt_s;
+    max_excess_mps = std::max(max_excess_mps, excess_mps);
+  }
+  void add(const AboveTopSpeed& o) {
+    vehicle_s += o.vehicle_s;
+    max_excess_mps = std::max(max_excess_mps, o.max_excess_mps);
+    runs += o.vehicle_s > 0.0 ? 1 : 0;
+  }
+};
+
 struct PlayRunResult {
   director::PlayPhase final_phase = director::PlayPhase::kWaiting;
   bool handed_over = false;
@@ -128,6 +146,10 @@ struct PlayRunResult {
   // went on and off again in the same lane while the play was prepared (a lane change called
   // off), under a director's command and autonomous, with the time each kind spent there.
   SignalsCalledOff called_off_commanded;
+  // Above their type's top desired speed in the inner region while the play was prepared: under a
+  // director's transport command (actors and cleared vehicles), and autonomous.
+  AboveTopSpeed above_top_commanded;
+  AboveTopSpeed above_top_autonomous;
   SignalsCalledOff called_off_autonomous;
   int created = 0;
   int created_in_view = 0;           // born inside the inner region: must be 0

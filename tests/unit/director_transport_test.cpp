@@ -262,6 +262,33 @@ TEST_F(EgoInTheRightLaneOfTwo, AClearedVehicleAheadOfTheEgoThatCannotMakeItInTim
   EXPECT_EQ(top->lane, 0);
 }
 
+TEST_F(EgoInTheRightLaneOfTwo, NoClearedVehicleIsAskedAboveItsTypesTopSpeed) {
+  // As above, but vehicle 1 is a truck, and trucks wish 95 km/h at most: the top of its band is
+  // that, not its speed plus the band's 8 m/s (a truck at 127 km/h in the cut-in, stop 44). A car
+  // of a type that may go faster still gets the whole band.
+  const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 2255.0, 2370.0},
+                                       {Direction::kForward, 1, 2255.0, 2370.0}};
+  const std::vector<int> no_roles;
+  const double truck_top_mps = 95.0 / 3.6;
+  const TypeTable types{{1.4, true, 160.0 / 3.6}, {0.6, true, truck_top_mps}};
+  ObservedVehicle truck = vehicle(1, 2020.0, 25.0);
+  truck.type_index = 1;
+  const auto truck_out = clear_out(truck, ClearingSituation{zones, 10.0, ego, 2250.0, no_roles, lanes, cfg, {}, types});
+  ASSERT_TRUE(truck_out.has_value());
+  EXPECT_DOUBLE_EQ(truck_out->speed_mps, truck_top_mps);
+  ObservedVehicle car = truck;
+  car.type_index = 0;
+  const auto car_out = clear_out(car, ClearingSituation{zones, 10.0, ego, 2250.0, no_roles, lanes, cfg, {}, types});
+  ASSERT_TRUE(car_out.has_value());
+  EXPECT_DOUBLE_EQ(car_out->speed_mps, car.speed_mps + cfg.max_speed_offset_mps);
+  // The band never ends below the truck's present speed (above its type's top, it is not asked to
+  // be faster still).
+  truck.speed_mps = truck_top_mps + 1.0;
+  const auto fast = clear_out(truck, ClearingSituation{zones, 10.0, ego, 2250.0, no_roles, lanes, cfg, {}, types});
+  ASSERT_TRUE(fast.has_value());
+  EXPECT_DOUBLE_EQ(fast->speed_mps, truck.speed_mps);
+}
+
 TEST_F(EgoInTheRightLaneOfTwo, TheEgosLeaderInAZoneMovesAheadInTheActorsLaneOnlyOutOfTheActorsWay) {
   // A cut-in 40 s from now (ego then at 3000 m): the ego's lane a zone from 3 to 60 m ahead, the
   // cutter's room in the left lane from 3008 to 3046 m. The ego's leader, 45 m ahead of it at its

@@ -1,7 +1,8 @@
 // The shipped plays with every core in one process, in lockstep (tests/bench/play_runs.hpp, the
 // director bench's runs): on fixed traffic seeds the play is handed over and runs to its end, and
 // on every run the director causes no overlap, creates nothing inside the driver's view nor takes
-// anything off the road there, and reaches a verdict (done, or failed with the reason).
+// anything off the road there, drives no vehicle faster than its type's drivers ever wish, and
+// reaches a verdict (done, or failed with the reason).
 #include <gtest/gtest.h>
 
 #include <ostream>
@@ -19,6 +20,10 @@ void expect_safe(const PlayRunResult& r, const std::string& what) {
   EXPECT_EQ(r.overlaps_with_actor, 0) << what;
   EXPECT_EQ(r.created_in_view, 0) << what;
   EXPECT_EQ(r.taken_off_in_view, 0) << what;
+  // No vehicle the director commands drives in view faster than its type's drivers ever wish (a
+  // truck asked ahead of a zone at 127 km/h where trucks wish 95 at most, cut-in, stop 44).
+  EXPECT_EQ(r.above_top_commanded.vehicle_s, 0.0)
+      << what << ": by up to " << 3.6 * r.above_top_commanded.max_excess_mps << " km/h";
   EXPECT_TRUE(r.final_phase == director::PlayPhase::kDone || r.final_phase == director::PlayPhase::kFailed)
       << what << ": ended in " << director::to_string(r.final_phase);
   if (r.final_phase == director::PlayPhase::kFailed) {

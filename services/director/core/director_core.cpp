@@ -34,7 +34,8 @@ DirectorCore::DirectorCore(const ScenarioConfig& scenario, std::uint64_t seed)
   TypeTable types;
   for (const VehicleTypeConfig& t : scenario_.vehicle_types) {
     types.push_back({t.driver.max_accel_mps2.mean,
-                     lane_change_model_by_name(t.driver.lane_change) == LaneChangeModel::kOvertaking});
+                     lane_change_model_by_name(t.driver.lane_change) == LaneChangeModel::kOvertaking,
+                     t.driver.desired_speed_mps.max});
   }
   const PlaySetting setting{scenario_.director, scenario_.window,
                             Lanes{scenario_.road.lanes_forward, scenario_.road.lanes_backward}, types};

@@ -70,7 +70,8 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
     if (v != nullptr && v->direction == in.ego.direction) actors.push_back({v->target_lane, v->s_m, v->speed_mps});
   }
   const ClearingSituation situation{to_clear,   aim.time_s,     in.ego,           aim.ego_s_m,
-                                    role_lanes, setting_.lanes, setting_.director, actors};
+                                    role_lanes, setting_.lanes, setting_.director, actors,
+                                    setting_.types};
   // Vehicle i, ours from now on, is told to clear out (a cleared one keeps its last command until
   // the handover); a speed is given with the lead actors get (drive_speed_mps).
   auto clear = [&](std::size_t i, const Clearance& c) {
@@ -84,6 +85,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
     if (drive_mps != kOwnDesiredSpeed_mps) {
       const double type_accel = accel_of(setting_.types, v.type_index);
       drive_mps = drive_speed_mps(drive_mps, v.speed_mps, transport_rate_mps2(setting_.director, type_accel), type_accel);
+      drive_mps = std::min(drive_mps, top_speed_of(setting_.types, v.type_index));
     }
     const ActorControl control = transported(drive_mps, c.lane);
     note_lane_request(v, control, in.ego.time_s);

@@ -3,6 +3,7 @@
 // Positions are road s; "travel" coordinates are progress along a vehicle's own direction
 // (sign(direction) * s), so ahead is larger for both directions.
 
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -33,6 +34,7 @@ struct Lanes {
 struct TypeTraits {
   double accel_mps2 = 0.0;  // their mean maximum acceleration (0: unknown)
   bool overtakes = true;    // they overtake in the oncoming lane (lane_change "overtaking")
+  double top_speed_mps = 0.0;  // the highest desired speed any of them has (0: unknown)
 };
 using TypeTable = std::vector<TypeTraits>;
 // A type not in the table: acceleration unknown, and taken to overtake.
@@ -41,6 +43,11 @@ inline double accel_of(const TypeTable& types, std::uint8_t type_index) {
 }
 inline bool overtakes_of(const TypeTable& types, std::uint8_t type_index) {
   return type_index >= types.size() || types[type_index].overtakes;
+}
+// The highest desired speed the director gives a vehicle of the type (infinite where unknown).
+inline double top_speed_of(const TypeTable& types, std::uint8_t type_index) {
+  const double top = type_index < types.size() ? types[type_index].top_speed_mps : 0.0;
+  return top > 0.0 ? top : std::numeric_limits<double>::infinity();
 }
 
 // The lane of the ego's direction a play is staged beside: the lane the ego is in or moving to,
