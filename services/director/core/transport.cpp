@@ -274,8 +274,8 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
   if (t <= 0.0 || at.lanes.of(v.direction) <= 1) return std::nullopt;
   const double p = dir * v.s_m;
   const DirectorConfig& cfg = at.cfg;
-  // The band around its speed, never above the highest speed its type's drivers wish (a truck
-  // asked to 108 km/h to get ahead of a zone where trucks wish 95 at most: cut-in, stop 44).
+  // The band around its speed, never above the highest speed its type's drivers wish (trucks were
+  // asked up to 127 km/h to get ahead of a zone where trucks wish 95 at most: cut-in, stop 44).
   const double high = std::min(v.speed_mps + cfg.max_speed_offset_mps,
                                std::max(v.speed_mps, top_speed_of(at.types, v.type_index)));
   const double low = std::min(high, std::max(0.0, std::max(cfg.min_speed_mps, v.speed_mps - cfg.max_speed_offset_mps)));
