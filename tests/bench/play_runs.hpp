@@ -80,7 +80,7 @@ class RightPassCounter {
 };
 
 // Vehicles in view faster than any driver of their type wishes to drive (the scenario's highest
-// desired speed of the type, `desired_speed_kph { max }`): a truck at 108 km/h where trucks wish
+// desired speed of the type, `desired_speed_kph { max }`): a truck at 127 km/h where trucks wish
 // 95 at most is not everyday traffic, whoever asked it to.
 struct AboveTopSpeed {
   double vehicle_s = 0.0;       // time vehicles of this kind spent above it
