@@ -3,6 +3,7 @@
 // director_transport_test; zone clearing: director_clearing_test).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "core_test_util.hpp"
@@ -231,6 +232,37 @@ TEST(PlayPhases, AnActorThatMissesItsStartByFarIsReplacedOnlyWhileTheEgoKeepsIts
   };
   EXPECT_EQ(casts_of(0.0), "cast: lead = vehicle 7; cast: lead = vehicle 8; ");
   EXPECT_EQ(casts_of(-1.5), "cast: lead = vehicle 7; ");
+}
+
+TEST(PlayPhases, AnActorIsNeverAskedAboveItsTypesTopSpeed) {
+  // The lead play with an ego at 40 m/s; its actor starts 20 m ahead of the ego at its speed and
+  // must gain 20 m. Speeding up, it is given a desired speed above its target (drive_speed_mps),
+  // but never above the fastest car driver's wish (150 km/h, tests/scenarios/minimal.pbtxt): its
+  // start speed, 40 m/s, is below that.
+  ScenarioConfig sc = testing::minimal_scenario();
+  PlayConfig play = lead_play();
+  play.roles[0].type_index = 0;
+  sc.plays = {play};
+  const double top_mps = sc.vehicle_types[0].driver.desired_speed_mps.max;
+  ASSERT_NEAR(top_mps, 150.0 / 3.6, 1e-9);
+  DirectorCore core(sc, 1);
+  StepInput in;
+  double highest_mps = 0.0;
+  int commands = 0;
+  for (Step k = 0; k < 50; ++k) {
+    in.step = k;
+    const double ego_s = 2000.0 + 4.0 * static_cast<double>(k);
+    in.ego = testing::ego_at(k, ego_s, 40.0);
+    in.world_prev = {vehicle(7, ego_s + 20.0, 40.0)};
+    for (const ActorCommand& c : core.step(in).commands) {
+      if (c.vehicle != 7 || c.control.mode != ControlMode::kTransported) continue;
+      ++commands;
+      highest_mps = std::max(highest_mps, c.control.speed_mps);
+    }
+  }
+  ASSERT_GT(commands, 0);
+  EXPECT_GT(highest_mps, 40.0);  // it is asked to speed up
+  EXPECT_LE(highest_mps, top_mps + 1e-9);
 }
 
 // A play driven to trigger point 2 with one vehicle cast as the lead, then the ego `past_m`

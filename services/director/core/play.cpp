@@ -301,6 +301,10 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
         t.drive_mps = drive_speed_mps(pace_mps, v->speed_mps, rate, type_accel);
       }
     }
+    // Never a wish above the highest of its type's drivers (as for the cleared vehicles,
+    // play_clearing.cpp), unless the play asks its start speed above that: the desired speed given
+    // to speed an actor up (drive_speed_mps) reached 181 km/h for cars that wish 150 at most.
+    t.drive_mps = std::min(t.drive_mps, std::max(top_speed_of(setting_.types, v->type_index), slots[r].speed_mps));
     role.command_mps = t.speed_mps;
     role.position_error_m = t.position_error_m;
     role.speed_error_mps = t.speed_error_mps;
