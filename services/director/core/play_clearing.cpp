@@ -71,7 +71,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   }
   const ClearingSituation situation{to_clear,   aim.time_s,     in.ego,           aim.ego_s_m,
                                     role_lanes, setting_.lanes, setting_.director, actors,
-                                    setting_.types};
+                                    setting_.types, slots};
   // Vehicle i, ours from now on, is told to clear out (a cleared one keeps its last command until
   // the handover); a speed is given with the lead actors get (drive_speed_mps).
   auto clear = [&](std::size_t i, const Clearance& c) {

@@ -137,6 +137,7 @@ struct ClearingSituation {
   const DirectorConfig& cfg;
   std::vector<ActorPlace> actors = {};  // where the actors of the ego's direction are now
   TypeTable types = {};                 // the vehicle types' drivers (stage.hpp): none asked above its top speed
+  std::vector<Slot> slots = {};         // the roles' start places
 };
 std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSituation& at);
 
