@@ -114,8 +114,10 @@ ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>&
 // own desired speed), and its own leader holds it in the queue the ego follows. It changes into a
 // neighbouring lane that an actor needs instead, when it can be ahead of every zone of that lane
 // by the start at a speed within the band, is ahead of that lane's actors now (it never has to get
-// past one) and no actor behind it there catches up with it before the start at their present
-// speeds (it would hold that actor up on its way): onto the free lane first, then into such a
+// past one), no actor behind it there catches up with it before the start at their present
+// speeds (it would hold that actor up on its way) and none starts there faster than any driver of
+// its type wishes to drive (a truck sent ahead of the cutter was caught once the ego sped up, stop
+// 45; ClearingSituation::slots): onto the free lane first, then into such a
 // lane, then by its speed in its own. Never into a lane where an actor is alongside it (from just
 // behind it to the room the actor keeps ahead): it would cut in on the actor.
 struct ActorPlace {
