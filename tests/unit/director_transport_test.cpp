@@ -17,6 +17,10 @@ using testing::at_trigger2;
 using testing::lead_play;
 using testing::vehicle;
 
+// A role of the ego's (forward) direction that starts in `lane`: where and how fast matter only
+// against vehicle types (ClearingSituation::types), which these tests give where they need them.
+std::vector<Slot> role_starting_in(int lane) { return {{Direction::kForward, lane, 0.0, 0.0}}; }
+
 // Drives a plan step by step at its rate: to the cruise speed, cruise, and the final change once
 // it is due; the distance covered and the speed at the end.
 struct Driven {
@@ -145,8 +149,8 @@ TEST(Transport, AVehicleThatWouldStandInAClearZoneIsSentToTheNextLaneOrOutOfTheZ
   const ObservedVehicle v = vehicle(1, 2020.0, 25.0);
   auto clear = [&](const ObservedVehicle& x, const PlayConfig& p, const Lanes& lanes, const EgoObservation& e) {
     const std::vector<ZoneAtStart> zones = zones_of(p, Direction::kForward, 0, 3000.0, lanes);
-    const std::vector<int> role_lanes{0};
-    return clear_out(x, ClearingSituation{zones, 40.0, e, 3000.0, role_lanes, lanes, cfg});
+    const std::vector<Slot> roles = role_starting_in(0);
+    return clear_out(x, ClearingSituation{zones, 40.0, e, 3000.0, roles, lanes, cfg});
   };
   const auto two = clear(v, play, Lanes{2, 0}, ego);
   ASSERT_TRUE(two.has_value());
@@ -254,7 +258,7 @@ TEST_F(EgoInTheRightLaneOfTwo, AClearedVehicleAheadOfTheEgoThatCannotMakeItInTim
   // planned and 10.7 m/s even by the start: beyond the 8 m/s band in either lane.
   const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 2255.0, 2370.0},
                                        {Direction::kForward, 1, 2255.0, 2370.0}};
-  const std::vector<int> no_roles;
+  const std::vector<Slot> no_roles;
   const ObservedVehicle v = vehicle(1, 2020.0, 25.0);
   const auto top = clear_out(v, ClearingSituation{zones, 10.0, ego, 2250.0, no_roles, lanes, cfg});
   ASSERT_TRUE(top.has_value());
@@ -268,7 +272,7 @@ TEST_F(EgoInTheRightLaneOfTwo, NoClearedVehicleIsAskedAboveItsTypesTopSpeed) {
   // of a type that may go faster still gets the whole band.
   const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 2255.0, 2370.0},
                                        {Direction::kForward, 1, 2255.0, 2370.0}};
-  const std::vector<int> no_roles;
+  const std::vector<Slot> no_roles;
   const double truck_top_mps = 95.0 / 3.6;
   const TypeTable types{{1.4, true, 160.0 / 3.6}, {0.6, true, truck_top_mps}};
   ObservedVehicle truck = vehicle(1, 2020.0, 25.0);
@@ -295,10 +299,10 @@ TEST_F(EgoInTheRightLaneOfTwo, TheEgosLeaderInAZoneMovesAheadInTheActorsLaneOnly
   // speed, would stand in the zone: by its speed alone it stays in the queue the ego follows.
   const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 3003.0, 3060.0},
                                        {Direction::kForward, 1, 3008.0, 3046.0}};
-  const std::vector<int> role_lanes{1};
+  const std::vector<Slot> roles = role_starting_in(1);
   const ObservedVehicle leader = vehicle(1, 2045.0, 25.0, 0);
   auto clear = [&](std::vector<ActorPlace> actors) {
-    return clear_out(leader, ClearingSituation{zones, 40.0, ego, 3000.0, role_lanes, lanes, cfg, std::move(actors)});
+    return clear_out(leader, ClearingSituation{zones, 40.0, ego, 3000.0, roles, lanes, cfg, std::move(actors)});
   };
   // No actor in the left lane yet: it changes there and is ahead of the cutter's room 5 s early.
   const auto moved = clear({});
@@ -325,13 +329,12 @@ TEST_F(EgoInTheRightLaneOfTwo, TheEgosLeaderIsNeverSentAheadOfAnActorThatStartsF
   // to start at 26 m/s the truck moves over as the car does.
   const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 3003.0, 3060.0},
                                        {Direction::kForward, 1, 3008.0, 3046.0}};
-  const std::vector<int> role_lanes{1};
   const TypeTable types{{1.4, true, 160.0 / 3.6}, {0.6, true, 95.0 / 3.6}};
   ObservedVehicle leader = vehicle(1, 2045.0, 25.0, 0);
   auto lane_of = [&](int type_index, double cutter_speed_mps) {
     leader.type_index = type_index;
     const std::vector<Slot> slots{{Direction::kForward, 1, 3016.0, cutter_speed_mps}};
-    const auto c = clear_out(leader, ClearingSituation{zones, 40.0, ego, 3000.0, role_lanes, lanes, cfg, {}, types, slots});
+    const auto c = clear_out(leader, ClearingSituation{zones, 40.0, ego, 3000.0, slots, lanes, cfg, {}, types});
     return c.has_value() ? c->lane : -1;
   };
   EXPECT_EQ(lane_of(0, 27.0), 1);
@@ -347,9 +350,9 @@ TEST_F(EgoInTheRightLaneOfTwo, LateOnTheEgosLeaderMovesAheadInTheNextLaneByTheSt
   // top of the band behind the ego's own leaders, a car stood in the zone at the start: cut-in, seed 58.)
   const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 2253.0, 2310.0},
                                        {Direction::kForward, 1, 2258.0, 2296.0}};
-  const std::vector<int> role_lanes{1};
+  const std::vector<Slot> roles = role_starting_in(1);
   const ObservedVehicle leader = vehicle(1, 2030.0, 25.0, 0);
-  const auto moved = clear_out(leader, ClearingSituation{zones, 10.0, ego, 2250.0, role_lanes, lanes, cfg});
+  const auto moved = clear_out(leader, ClearingSituation{zones, 10.0, ego, 2250.0, roles, lanes, cfg});
   ASSERT_TRUE(moved.has_value());
   EXPECT_EQ(moved->lane, 1);
   EXPECT_NEAR(leader.s_m + moved->speed_mps * 10.0, 2296.0 + 2.25 + 5.0, 1e-9);
@@ -365,9 +368,9 @@ TEST_F(EgoInTheRightLaneOfTwo, AVehicleInTheZoneBehindTheCutterFallsBackByTheSta
   const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 2353.0, 2410.0},
                                        {Direction::kForward, 1, 2325.0, 2354.0},
                                        {Direction::kForward, 1, 2357.75, 2394.25}};
-  const std::vector<int> role_lanes{1};
+  const std::vector<Slot> roles = role_starting_in(1);
   const ObservedVehicle car = vehicle(1, 1983.0, 25.0, 1);
-  const auto back = clear_out(car, ClearingSituation{zones, 14.0, ego, 2350.0, role_lanes, lanes, cfg, {{1, 2012.0, 25.0}}});
+  const auto back = clear_out(car, ClearingSituation{zones, 14.0, ego, 2350.0, roles, lanes, cfg, {{1, 2012.0, 25.0}}});
   ASSERT_TRUE(back.has_value());
   EXPECT_EQ(back->lane, 1);
   EXPECT_NEAR(car.s_m + back->speed_mps * 14.0, 2325.0 - 2.25 - 5.0, 1e-9);
@@ -382,10 +385,10 @@ TEST_F(EgoInTheRightLaneOfTwo, AVehicleNeverMovesOutOfAZoneIntoALaneWhereAnActor
   // sent ahead in its own lane instead. With the lead far behind, it moves over.
   const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 2503.0, 2537.0},
                                        {Direction::kForward, 0, 2535.75, 2572.25}};
-  const std::vector<int> role_lanes{0};
+  const std::vector<Slot> roles = role_starting_in(0);
   const ObservedVehicle car = vehicle(1, 2051.0, 25.0, 0);
   auto clear = [&](std::vector<ActorPlace> actors) {
-    return clear_out(car, ClearingSituation{zones, 20.0, ego, 2500.0, role_lanes, lanes, cfg, std::move(actors)});
+    return clear_out(car, ClearingSituation{zones, 20.0, ego, 2500.0, roles, lanes, cfg, std::move(actors)});
   };
   const auto beside = clear({{1, 2037.0, 25.0}});
   ASSERT_TRUE(beside.has_value());
@@ -402,10 +405,10 @@ TEST_F(EgoInTheRightLaneOfTwo, AVehicleInAnActorsLaneIsClearedOnlyOnItsOwnSideOf
   // falling back behind it is the smaller change of speed (27.45 against 28.95 m/s).
   const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 3003.0, 3060.0},
                                        {Direction::kForward, 1, 3008.0, 3046.0}};
-  const std::vector<int> role_lanes{1};
+  const std::vector<Slot> roles = role_starting_in(1);
   const ObservedVehicle car = vehicle(1, 2040.0, 25.0, 1);
   auto clear = [&](std::vector<ActorPlace> actors) {
-    return clear_out(car, ClearingSituation{zones, 40.0, ego, 3000.0, role_lanes, lanes, cfg, std::move(actors)});
+    return clear_out(car, ClearingSituation{zones, 40.0, ego, 3000.0, roles, lanes, cfg, std::move(actors)});
   };
   const double behind_mps = (3008.0 - 2.25 - 5.0 - 2040.0) / 35.0;
   const double ahead_mps = (3046.0 + 2.25 + 5.0 - 2040.0) / 35.0;
@@ -458,9 +461,9 @@ TEST_F(CutterOnItsWay, AnActorAheadOfTheEgoDoesNotPassInTheEgosLane) {
 TEST_F(CutterOnItsWay, AVehicleHoldingAnActorUpOnItsWayMakesWayToALaneClearOfTheZones) {
   // The ego's lane is a zone from 3 to 60 m ahead of it at the start (40 s from now, at 3000 m).
   const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 3003.0, 3060.0}};
-  const std::vector<int> role_lanes{1};
+  const std::vector<Slot> roles = role_starting_in(1);
   const ObservedVehicle slow = vehicle(2, 1950.0, 24.0, 1);  // ends 1910 + 1000 = 2910: behind the zone
-  const ClearingSituation at{zones, 40.0, ego, 3000.0, role_lanes, lanes, cfg};
+  const ClearingSituation at{zones, 40.0, ego, 3000.0, roles, lanes, cfg};
   const auto way = make_way(slow, slot, actor, 27.0, -1, at);
   ASSERT_TRUE(way.has_value());
   EXPECT_EQ(way->lane, 0);
@@ -481,9 +484,9 @@ TEST_F(CutterOnItsWay, AVehicleNeverMakesWayIntoTheLaneTheActorPassesIn) {
   // An actor told to pass in the right lane, moving there, or in it already: the slow one keeps
   // its lane, or it would stand in front of the actor in the lane the actor passes in.
   const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, 3003.0, 3060.0}};
-  const std::vector<int> role_lanes{1};
+  const std::vector<Slot> roles = role_starting_in(1);
   const ObservedVehicle slow = vehicle(2, 1950.0, 24.0, 1);
-  const ClearingSituation at{zones, 40.0, ego, 3000.0, role_lanes, lanes, cfg};
+  const ClearingSituation at{zones, 40.0, ego, 3000.0, roles, lanes, cfg};
   ASSERT_TRUE(make_way(slow, slot, actor, 27.0, 1, at).has_value());  // told to keep its lane
   EXPECT_FALSE(make_way(slow, slot, actor, 27.0, 0, at).has_value());  // told to pass on the right
   ObservedVehicle moving = actor;

@@ -60,18 +60,14 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   }
   std::vector<ZoneAtStart> to_clear = slot_zones(slots, lengths, in.ego.direction);
   to_clear.insert(to_clear.end(), zones.begin(), zones.end());
-  std::vector<int> role_lanes;
-  for (const Slot& s : slots) {
-    if (s.direction == in.ego.direction) role_lanes.push_back(s.lane);
-  }
   std::vector<ActorPlace> actors;
   for (const Role& r : roles_) {
     const ObservedVehicle* v = r.actor == kNoVehicle ? nullptr : find(in, r.actor);
     if (v != nullptr && v->direction == in.ego.direction) actors.push_back({v->target_lane, v->s_m, v->speed_mps});
   }
-  const ClearingSituation situation{to_clear,   aim.time_s,     in.ego,           aim.ego_s_m,
-                                    role_lanes, setting_.lanes, setting_.director, actors,
-                                    setting_.types, slots};
+  const ClearingSituation situation{to_clear, aim.time_s,     in.ego,           aim.ego_s_m,
+                                    slots,    setting_.lanes, setting_.director, actors,
+                                    setting_.types};
   // Vehicle i, ours from now on, is told to clear out (a cleared one keeps its last command until
   // the handover); a speed is given with the lead actors get (drive_speed_mps).
   auto clear = [&](std::size_t i, const Clearance& c) {

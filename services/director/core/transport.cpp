@@ -214,6 +214,12 @@ double clearing_speed_mps(double distance_m, double t_plan_s, double time_left_s
   return distance_m / std::max(time_left_s, t_plan_s);
 }
 
+// A role of the ego's direction starts in `lane`.
+bool a_role_lane(int lane, const ClearingSituation& at) {
+  return std::any_of(at.slots.begin(), at.slots.end(),
+                     [&](const Slot& s) { return s.direction == at.ego.direction && s.lane == lane; });
+}
+
 // An actor starts in `lane` faster than any driver of v's type wishes to drive: v, sent there
 // ahead of it, would be caught by it and hold it back. (A truck sent from the ego's lane into the
 // cutter's, ahead of the cutter's room, held the cutter back at its top speed in 14 of the cut-in's
@@ -277,7 +283,7 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
     for (const ZoneAtStart& z : at.zones) {
       if (z.lane == lane && z.direction == v.direction) return false;
     }
-    return std::find(at.role_lanes.begin(), at.role_lanes.end(), lane) == at.role_lanes.end();
+    return !a_role_lane(lane, at);
   };
   for (int lane : {v.lane - 1, v.lane + 1}) {  // the right one first
     if (free_lane(lane)) return Clearance{kOwnDesiredSpeed_mps, lane};
@@ -358,7 +364,7 @@ std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, co
   const double s_then = s_after_m(v, std::max(at.time_left_s, 0.0));
   auto clear_lane = [&](int lane) {
     if (lane < 0 || lane >= at.lanes.of(v.direction)) return false;
-    if (std::find(at.role_lanes.begin(), at.role_lanes.end(), lane) != at.role_lanes.end()) return false;
+    if (a_role_lane(lane, at)) return false;
     if (occupies(actor, v.direction, lane) || lane == actor_cmd_lane) return false;
     return std::none_of(at.zones.begin(), at.zones.end(), [&](const ZoneAtStart& z) {
       return z.direction == v.direction && in_zone(z, lane, s_then, v.length_m + 2.0 * kZoneMargin_m);

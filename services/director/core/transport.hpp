@@ -134,12 +134,11 @@ struct ClearingSituation {
   double time_left_s = 0.0;             // until the time the zones are for
   const EgoObservation& ego;
   double ego_s_then_m = 0.0;            // where the ego is then
-  const std::vector<int>& role_lanes;   // lanes of the actors of the ego's direction
+  const std::vector<Slot>& slots;       // the roles' start places (the lanes they need: those of the ego's direction)
   const Lanes& lanes;
   const DirectorConfig& cfg;
   std::vector<ActorPlace> actors = {};  // where the actors of the ego's direction are now
   TypeTable types = {};                 // the vehicle types' drivers (stage.hpp): none asked above its top speed
-  std::vector<Slot> slots = {};         // the roles' start places
 };
 std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSituation& at);
 
