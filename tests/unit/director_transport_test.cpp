@@ -342,6 +342,36 @@ TEST_F(EgoInTheRightLaneOfTwo, TheEgosLeaderIsNeverSentAheadOfAnActorThatStartsF
   EXPECT_EQ(lane_of(1, 26.0), 1);
 }
 
+TEST_F(EgoInTheRightLaneOfTwo, LateATruckTheEgoFollowsAtTheZonesEdgeMovesAheadOfACutterInPlace) {
+  // A cut-in, the cutter to start at 27 m/s in the left lane 12 m ahead of the ego, the ego's lane
+  // a zone from 3 to 60 m ahead of it. A truck (16.5 m, drivers wish 95 km/h at most) 60 m ahead
+  // of the ego, which follows it at its speed, would stand in the zone by a few metres at the start,
+  // and it cannot get ahead of it. 10 s before the start, with the cutter on its way to its place,
+  // it moves over ahead of the cutter's room (the cutter leaves that lane when it cuts in): ten of
+  // the cut-in's 41 failures on seeds 1-200 were such a truck in the zone with the cutter in place
+  // (stop 46). Not 20 s before, nor when the ego closes on it, nor with the cutter still catching up
+  // from behind.
+  const TypeTable types{{1.4, true, 160.0 / 3.6}, {0.6, true, 95.0 / 3.6}};
+  auto lane_of = [&](double time_left_s, double ego_speed_mps, double cutter_short_m) {
+    const EgoObservation e = testing::ego_at(0, 2000.0, ego_speed_mps, 0);
+    const double ego_then_m = 2000.0 + 25.0 * time_left_s;  // the estimate: at the truck's speed
+    const std::vector<Slot> slots{{Direction::kForward, 1, ego_then_m + 12.0, 27.0}};
+    const std::vector<ZoneAtStart> zones{{Direction::kForward, 0, ego_then_m + 3.0, ego_then_m + 60.0},
+                                         {Direction::kForward, 1, ego_then_m - 25.0, ego_then_m + 4.0},
+                                         {Direction::kForward, 1, ego_then_m + 7.75, ego_then_m + 46.25}};
+    const std::vector<ActorPlace> actors{{1, slots[0].s_m - 27.0 * time_left_s - cutter_short_m, 27.0}};
+    ObservedVehicle truck = vehicle(1, 2060.0, 25.0, 0);
+    truck.type_index = 1;
+    truck.length_m = 16.5;
+    const auto c = clear_out(truck, ClearingSituation{zones, time_left_s, e, ego_then_m, slots, lanes, cfg, actors, types});
+    return c.has_value() ? c->lane : -1;
+  };
+  EXPECT_EQ(lane_of(10.0, 25.0, 0.0), 1);
+  EXPECT_EQ(lane_of(20.0, 25.0, 0.0), 0);
+  EXPECT_EQ(lane_of(10.0, 27.0, 0.0), 0);
+  EXPECT_EQ(lane_of(10.0, 25.0, 30.0), 0);
+}
+
 TEST_F(EgoInTheRightLaneOfTwo, LateOnTheEgosLeaderMovesAheadInTheNextLaneByTheStartWhenItCannotBeThereEarly) {
   // 10 s before a cut-in (ego then at 2250 m): the ego's lane a zone from 3 to 60 m ahead, the
   // cutter's room in the left lane from 2258 to 2296 m. The ego's leader, 30 m ahead of it at its

@@ -92,6 +92,12 @@ std::vector<ZoneAtStart> zones_of(const PlayConfig& play, Direction ego_directio
 inline constexpr double kSlotGapBehind_m = 2.0;
 inline constexpr double kSlotMinGap_m = 5.0;
 inline constexpr double kSlotTimeGap_s = 1.0;
+// The ego's leader may move into a lane ahead of an actor that starts there faster than its type
+// drives this long before the start at most (ahead_in_next_lane), if the ego follows it within
+// kFollowedSpeedBand_mps and the actor will be within kActorInPlace_m of its start.
+inline constexpr double kLateMoveWindow_s = 12.0;
+inline constexpr double kFollowedSpeedBand_mps = 1.0;
+inline constexpr double kActorInPlace_m = 10.0;
 std::vector<ZoneAtStart> slot_zones(const std::vector<Slot>& slots, const std::vector<double>& lengths_m,
                                     Direction ego_direction);
 
@@ -117,7 +123,8 @@ ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>&
 // past one), no actor behind it there catches up with it before the start at their present
 // speeds (it would hold that actor up on its way) and none starts there faster than any driver of
 // its type wishes to drive (a truck sent ahead of the cutter was caught once the ego sped up, stop
-// 45; ClearingSituation::slots): onto the free lane first, then into such a
+// 45; ClearingSituation::slots), unless, in the last kLateMoveWindow_s, the ego follows it at its
+// speed and that actor is in place already (stop 46): onto the free lane first, then into such a
 // lane, then by its speed in its own. Never into a lane where an actor is alongside it (from just
 // behind it to the room the actor keeps ahead): it would cut in on the actor.
 struct ActorPlace {
