@@ -232,7 +232,7 @@ bool a_role_lane(int lane, const ClearingSituation& at) {
 // already (its start within kActorInPlace_m at its present speed), if at its present speed it is
 // ahead of that lane's zones, the actor's room included, at the start: the actor does not catch up
 // with it before the start, and leaves that lane once the play begins. (In 10 of the cut-in's 41
-// failures on seeds 1-200, stop 46, a truck at its top speed 54-65 m ahead of an ego following it
+// failures on seeds 1-200, stop 46, a truck at 24.4-26.4 m/s 54-65 m ahead of an ego following it
 // stood in the zone, which ends 60 m ahead, the cutter in place beside the ego. Where the ego
 // closes on the leader, the leader leaves the zone behind by itself; moved over then, it slowed the
 // vehicles in the actor's lane and the actor with them.)
