@@ -240,7 +240,7 @@ bool moves_in_late(const ObservedVehicle& v, const Slot& s, const ClearingSituat
   const double t = std::max(at.time_left_s, 0.0);
   if (t > kLateMoveWindow_s || std::abs(at.ego.speed_mps - v.speed_mps) > kFollowedSpeedBand_mps) return false;
   const double dir = sign(v.direction);
-  const double rear_then_p = dir * v.s_m + v.speed_mps * t - 0.5 * v.length_m;
+  const double rear_then_p = dir * s_after_m(v, t) - 0.5 * v.length_m;
   if (rear_then_p < zones_front_p) return false;
   return std::any_of(at.actors.begin(), at.actors.end(), [&](const ActorPlace& a) {
     return a.lane == s.lane && std::abs(dir * (a.s_m - s.s_m) + a.speed_mps * t) <= kActorInPlace_m;
