@@ -9,6 +9,7 @@
 
 #include "behaviour/idm.hpp"
 #include "core_test_util.hpp"
+#include "director/core/recent_top.hpp"
 #include "director/core/stage.hpp"
 #include "director/core/start_time.hpp"
 #include "director_test_util.hpp"
@@ -108,6 +109,22 @@ TEST(Staging, TheEgosUnpassableLeaderIsTheNearestAheadInItsLaneWhereItsDirection
   EXPECT_EQ(unpassable_leader(overtaking, world, Lanes{1, 1}), nullptr);
   const std::vector<ObservedVehicle> behind_only = {vehicle(4, 950.0, 25.0)};
   EXPECT_EQ(unpassable_leader(ego, behind_only, Lanes{1, 1}), nullptr);
+}
+
+TEST(RecentTop, TheHighestValueWithinTheWindowAndNoOlder) {
+  RecentTop top(30.0);
+  EXPECT_DOUBLE_EQ(top.top(), 0.0);
+  top.observe(0.0, 25.0);
+  top.observe(10.0, 15.0);  // slowed: the 25 of 10 s ago is still the usual speed
+  EXPECT_DOUBLE_EQ(top.top(), 25.0);
+  top.observe(30.0, 15.0);
+  EXPECT_DOUBLE_EQ(top.top(), 25.0);  // exactly 30 s ago: still within
+  top.observe(30.5, 16.0);
+  EXPECT_DOUBLE_EQ(top.top(), 16.0);  // 25 is older than the window; 16 beats the 15s before it
+  top.observe(40.0, 12.0);
+  EXPECT_DOUBLE_EQ(top.top(), 16.0);
+  top.observe(61.0, 11.0);
+  EXPECT_DOUBLE_EQ(top.top(), 12.0);
 }
 
 }  // namespace

@@ -204,12 +204,14 @@ TEST(PlayPhases, AnActorThatMissesItsStartByFarIsReplacedOnlyWhileTheEgoKeepsIts
   // by seconds at every step (a driver who brakes is expected to go on braking): its actor is not
   // given up meanwhile. (With the estimate of a braking ego, a cutter 70 m ahead was given up for
   // a vehicle created 400 m behind, which missed its start by 54 m once the ego sped up again:
-  // cut-in, seed 59.)
+  // cut-in, seed 59.) Nor is it given up while an ego that slowed from 25 to 15 m/s at 1 s holds
+  // that speed, below 80 % of its highest in the last 30 s (stopped vehicle, seeds 64, 94, 97); at
+  // 21 m/s, 84 % of it, the ego counts as keeping its speed.
   ScenarioConfig sc = testing::minimal_scenario();
   PlayConfig play = lead_play();
   play.roles[0].type_index = 0;
   sc.plays = {play};
-  auto casts_of = [&](double ego_accel_mps2) {
+  auto casts_of = [&](double ego_accel_mps2, double speed_from_1s_mps = 25.0) {
     DirectorCore core(sc, 1);
     StepInput in;
     std::string casts;
@@ -217,6 +219,7 @@ TEST(PlayPhases, AnActorThatMissesItsStartByFarIsReplacedOnlyWhileTheEgoKeepsIts
     double ego_speed = 25.0;
     for (Step k = 0; k < 60; ++k) {
       in.step = k;
+      if (k == 10) ego_speed = speed_from_1s_mps;
       in.ego = testing::ego_at(k, ego_s, ego_speed);
       in.ego.accel_mps2 = ego_accel_mps2;
       const double lead_s = ego_s + 40.0;
@@ -232,6 +235,8 @@ TEST(PlayPhases, AnActorThatMissesItsStartByFarIsReplacedOnlyWhileTheEgoKeepsIts
   };
   EXPECT_EQ(casts_of(0.0), "cast: lead = vehicle 7; cast: lead = vehicle 8; ");
   EXPECT_EQ(casts_of(-1.5), "cast: lead = vehicle 7; ");
+  EXPECT_EQ(casts_of(0.0, 15.0), "cast: lead = vehicle 7; ");
+  EXPECT_EQ(casts_of(0.0, 21.0), "cast: lead = vehicle 7; cast: lead = vehicle 8; ");
 }
 
 TEST(PlayPhases, AnActorIsNeverAskedAboveItsTypesTopSpeed) {

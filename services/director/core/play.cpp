@@ -26,6 +26,10 @@ constexpr double kHopelessFor_s = 3.0;
 // While the ego speeds up or slows down faster than this, the estimate swings with it (a driver
 // who brakes is expected to go on braking for a while): no actor is judged hopeless then.
 constexpr double kSteadyEgo_mps2 = 0.3;
+// Nor while the ego drives below this share of its highest speed over the last
+// kUsualSpeedWindow_s with no leader it cannot pass (PlayRun::ego_slowed_down).
+constexpr double kSlowedShare = 0.8;
+constexpr double kUsualSpeedWindow_s = 30.0;
 // Closer to the start than this, and while the handover waits, the actors are aimed this far
 // ahead (stage.hpp, aim_of): a plan that runs out of time would otherwise stop correcting.
 constexpr double kAimHorizon_s = 4.0;
@@ -58,6 +62,7 @@ PlayRun::PlayRun(const PlayConfig& play, const PlaySetting& setting)
       staged_(play),
       setting_(setting),
       estimator_(StartTimeParams{setting.director.accel_memory_s}),
+      ego_usual_speed_(kUsualSpeedWindow_s),
       roles_(play.roles.size()) {}
 
 std::vector<VehicleId> PlayRun::holds() const {
@@ -148,6 +153,7 @@ void PlayRun::report(const PlayInput& in, PlayOutput& out, std::string detail) {
 PlayOutput PlayRun::step(const PlayInput& in) {
   PlayOutput out;
   estimator_.observe(in.ego.speed_mps, in.ego.accel_mps2, in.dt_s);
+  ego_usual_speed_.observe(in.ego.time_s, in.ego.speed_mps);
   const double x = ego_progress(in.ego);
   const int dir = sign(in.ego.direction);
   const PlayPhase before = phase_;
@@ -210,6 +216,11 @@ PlayOutput PlayRun::step(const PlayInput& in) {
   }
   first_report_ = false;
   return out;
+}
+
+bool PlayRun::ego_slowed_down(const PlayInput& in) const {
+  return in.ego.speed_mps < kSlowedShare * ego_usual_speed_.top() &&
+         unpassable_leader(in.ego, in.world, setting_.lanes) == nullptr;
 }
 
 std::optional<LeaderAhead> PlayRun::ego_leader(const PlayInput& in) const {
@@ -310,7 +321,7 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
     role.speed_error_mps = t.speed_error_mps;
     const bool hopeless = std::abs(t.position_error_m) > kHopelessMiss * play_.roles[r].position_tolerance_m ||
                           (v->lane != slots[r].lane && v->target_lane != slots[r].lane && time_to_start_s < kLateLaneChange_s);
-    if (!hopeless || std::abs(estimator_.smoothed_accel_mps2()) > kSteadyEgo_mps2) {
+    if (!hopeless || std::abs(estimator_.smoothed_accel_mps2()) > kSteadyEgo_mps2 || ego_slowed_down(in)) {
       role.hopeless_since_s = -1.0;
     } else if (role.hopeless_since_s < 0.0) {
       role.hopeless_since_s = in.ego.time_s;

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "director/core/recent_top.hpp"
 #include "director/core/script.hpp"
 #include "director/core/stage.hpp"
 #include "director/core/start_time.hpp"
@@ -123,6 +124,16 @@ class PlayRun {
   // The ego's leader for the start-time estimate where it cannot get past it (stage.hpp,
   // unpassable_leader), at the speed it is expected to keep.
   std::optional<LeaderAhead> ego_leader(const PlayInput& in) const;
+  // The ego drives well below its usual speed (kSlowedShare of its highest over the last
+  // kUsualSpeedWindow_s, play.cpp) where no leader holds it: a driver who slowed down and holds the
+  // lower speed for a while has the estimate put the start later than it will be once it speeds up
+  // again, and no actor is judged hopeless on that estimate. (The bench's braking driver holds 60 %
+  // of its speed for 6 s: in three stopped-vehicle runs, seeds 64, 94 and 97, the stopper, on its
+  // way 250 m ahead, was given up 3 s into the hold for a vehicle behind the ego, two of them
+  // created in the outer region behind, which ended 137-389 m short of the start.) Behind a leader
+  // it cannot pass, the estimate drives it behind that leader (start_time.hpp): counted there as
+  // well, the slowdown cost the slow truck play, whose ego slows behind the truck, 3 of 100 runs.
+  bool ego_slowed_down(const PlayInput& in) const;
   // Casts the roles without an actor; returns what it did ("" for nothing).
   std::string cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
                    PlayOutput& out);
@@ -215,6 +226,7 @@ class PlayRun {
   PlaySetting setting_;
   PlayPhase phase_ = PlayPhase::kWaiting;
   StartTimeEstimator estimator_;
+  RecentTop ego_usual_speed_;  // the ego's highest speed over kUsualSpeedWindow_s (play.cpp)
   std::vector<Role> roles_;
   std::map<VehicleId, ActorControl> sent_;  // the last control written to each vehicle held
   std::vector<VehicleId> cleared_;          // vehicles asked to leave a zone
