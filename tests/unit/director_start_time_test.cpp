@@ -120,7 +120,7 @@ TEST(RecentTop, TheHighestValueWithinTheWindowAndNoOlder) {
   top.observe(30.0, 15.0);
   EXPECT_DOUBLE_EQ(top.top(), 25.0);  // exactly 30 s ago: still within
   top.observe(30.5, 16.0);
-  EXPECT_DOUBLE_EQ(top.top(), 16.0);  // 25 is older than the window; 16 beats the 15s before it
+  EXPECT_DOUBLE_EQ(top.top(), 16.0);  // 25 is older than the window; 16 is above the 15 since
   top.observe(40.0, 12.0);
   EXPECT_DOUBLE_EQ(top.top(), 16.0);
   top.observe(61.0, 11.0);

@@ -19,7 +19,7 @@ class RecentTop {
     while (samples_.front().first < time_s - window_s_) samples_.pop_front();
   }
 
-  // The highest value observed within the window before the latest time; 0 before any.
+  // The highest value observed over the window that ends at the latest time; 0 before any.
   double top() const { return samples_.empty() ? 0.0 : samples_.front().second; }
 
  private:
