@@ -1,5 +1,7 @@
 // The event director's start-time estimation (paper IV): the extrapolation of the ego's speed
-// and acceleration, and the drive behind a leader the ego cannot pass; the leader it is given.
+// and acceleration, and the drive behind a leader the ego cannot pass; the leader it is given;
+// the ego's usual speed (RecentTop), against which an estimate made while it holds a lower speed
+// is not trusted to give an actor up (play.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
