@@ -111,10 +111,16 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
   std::map<std::string, int> causes;
   std::map<std::string, int> missing_at_t2;  // runs in which each kind was missing at trigger point 2
   std::map<std::string, std::pair<int, int>> by_variant;  // ok, runs
+  // By what the ego did with its lane between the trigger points (kept it or changed), and how
+  // the play stood staged when it passed trigger point 2 (as written or mirrored): ok, runs.
+  std::pair<int, int> by_lane[2][2] = {};
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const bench::PlayRunResult& r = runs[i];
     auto& bv = by_variant[bench::to_string(variants[i])];
     ++bv.second;
+    auto& bl = by_lane[r.ego_lane_changes > 0 ? 1 : 0][r.mirrored_at_trigger2 ? 1 : 0];
+    ++bl.second;
+    if (r.handed_over) ++bl.first;
     if (r.handed_over) {
       ++ok;
       ++bv.first;
@@ -167,6 +173,10 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
   if (missing_at_t2.empty()) std::printf(" nothing");
   for (const auto& [c, k] : missing_at_t2) std::printf("  %s %d", c.c_str(), k);
   std::printf("\n");
+  std::printf("by the ego's lane, trigger point 1 to 2 (done / runs): kept it, the play as written %d/%d, mirrored %d/%d; "
+              "changed it, as written at trigger point 2 %d/%d, mirrored %d/%d\n",
+              by_lane[0][0].first, by_lane[0][0].second, by_lane[0][1].first, by_lane[0][1].second, by_lane[1][0].first,
+              by_lane[1][0].second, by_lane[1][1].first, by_lane[1][1].second);
   std::printf("handed over at trigger point 2 %d / %zu (%.1f %%); after waiting beyond it: %d, waited mean %.1f  p95 %.1f  max %.1f s, "
               "the ego beyond it by mean %.0f  p95 %.0f  max %.0f m\n",
               at_trigger, runs.size(), 100.0 * at_trigger / n, ok - at_trigger, mean(waits), percentile(waits, 0.95),
@@ -323,12 +333,13 @@ int run(int argc, char** argv) {
       if (verbose) {
         const bench::PlayRunResult& r = results.back();
         std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s waited %4.1f s created %d "
-                    "overlaps %d/%d held up %4.1f s beside %4.1f s traffic %4.2f right %d/%d actors' decel %3.1f m/s2  %s\n",
+                    "overlaps %d/%d held up %4.1f s beside %4.1f s traffic %4.2f right %d/%d actors' decel %3.1f m/s2 "
+                    "ego lane changes %d%s  %s\n",
                     i, static_cast<unsigned long long>(s), bench::to_string(v), director::to_string(r.final_phase),
                     r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s, r.handover_wait_s, r.created,
                     r.overlaps_with_actor, r.overlaps_other, r.held_up_s, r.actor_beside_ego_s, r.traffic_slowed_to(),
                     r.passed_on_right.total(), r.passed_on_right_undirected.total(), r.actors.max_decel_mps2,
-                    r.failure.c_str());
+                    r.ego_lane_changes, r.mirrored_at_trigger2 ? " mirrored" : "", r.failure.c_str());
       }
     }
     print_play(loaded.config.plays.front().name + " (" + loaded.config.name + ")", results, variants);

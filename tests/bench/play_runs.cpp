@@ -168,6 +168,17 @@ TriggerTimes trigger_times_undirected(const ScenarioConfig& sc, std::uint64_t se
   return t;
 }
 
+bool staged_mirrored(const PlayConfig& play, const EgoObservation& ego, const director::Lanes& lanes) {
+  const PlayConfig staged = director::staged_beside(play, director::staging_lane(ego, lanes), lanes);
+  for (std::size_t i = 0; i < play.roles.size(); ++i) {
+    if (staged.roles[i].lane_offset != play.roles[i].lane_offset) return true;
+  }
+  for (std::size_t i = 0; i < play.clear.size(); ++i) {
+    if (staged.clear[i].lane_offset != play.clear[i].lane_offset) return true;
+  }
+  return false;
+}
+
 PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* trace, std::FILE* traffic) {
   PlayRunResult r;
   WindowCores cores(sc, seed);
@@ -187,14 +198,20 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
   double first_estimate_s = -1.0;
   bool seen_beyond_trigger2 = false;  // the first report once the ego passed trigger point 2
   const PlayConfig& play = sc.plays.front();
+  const director::Lanes lanes{sc.road.lanes_forward, sc.road.lanes_backward};
   double end_time_s = -1.0;
   for (Step k = 0; k <= last && !cores.at_road_end(); ++k) {
     StepInput in = cores.next_input();
     const StepOutputs out = cores.compute(in);
     const WindowBounds w = WindowBounds::around(in.ego.s_m, sc.window);
     if (r.trigger1_time_s < 0.0 && ego_passed(in, play.trigger1_s_m)) r.trigger1_time_s = in.ego.time_s;
-    if (r.trigger2_time_s < 0.0 && ego_passed(in, play.trigger2_s_m)) r.trigger2_time_s = in.ego.time_s;
+    if (r.trigger2_time_s < 0.0 && ego_passed(in, play.trigger2_s_m)) {
+      r.trigger2_time_s = in.ego.time_s;
+      r.mirrored_at_trigger2 = staged_mirrored(play, in.ego, lanes);
+    }
     if (r.trigger1_time_s >= 0.0 && r.trigger2_time_s < 0.0) {
+      const bool begins_change = in.ego_prev && in.ego_prev->target_lane == in.ego_prev->lane && in.ego.target_lane != in.ego.lane;
+      if (begins_change) ++r.ego_lane_changes;
       around_ego.add(in, sc);
       if (in.ego_prev) right_passes.observe(*in.ego_prev, in.world_prev, r.passed_on_right, trace);
     }

@@ -151,6 +151,12 @@ struct PlayRunResult {
   AboveTopSpeed above_top_commanded;
   AboveTopSpeed above_top_autonomous;
   SignalsCalledOff called_off_autonomous;
+  // The ego's lane changes begun between trigger points 1 and 2, and whether it passed trigger
+  // point 2 in a lane beside which the play is staged mirrored (director/core/stage.hpp,
+  // staged_beside: a cut-in's cutter then comes from the right). Each change of lane restages a
+  // play whose roles or zones lie in other lanes.
+  int ego_lane_changes = 0;
+  bool mirrored_at_trigger2 = false;
   int created = 0;
   int created_in_view = 0;           // born inside the inner region: must be 0
   int taken_off = 0;                 // withdrawn by the director (a gap in the oncoming traffic)
@@ -162,6 +168,10 @@ struct PlayRunResult {
 };
 
 inline constexpr double kBesideEgo_m = 15.0;
+
+// Whether `play`, staged beside the lane `ego` is in or moving to, is mirrored (any role's or
+// zone's lane offset negated).
+bool staged_mirrored(const PlayConfig& play, const EgoObservation& ego, const director::Lanes& lanes);
 
 // `trace`: if not null, every play report of the run is printed there, one line each.
 // `trace`: every play report; `traffic`: every 2 s from trigger point 1 on, the vehicles around the
