@@ -120,10 +120,10 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
     ++bv.second;
     auto& bl = by_lane[r.ego_lane_changes > 0 ? 1 : 0][r.mirrored_at_trigger2 ? 1 : 0];
     ++bl.second;
-    if (r.handed_over) ++bl.first;
     if (r.handed_over) {
       ++ok;
       ++bv.first;
+      ++bl.first;
       waits.push_back(r.handover_wait_s);
       beyond.push_back(r.handover_beyond_m);
       if (r.handover_wait_s < kAtTrigger_s) ++at_trigger;

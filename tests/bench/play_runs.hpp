@@ -151,7 +151,8 @@ struct PlayRunResult {
   AboveTopSpeed above_top_commanded;
   AboveTopSpeed above_top_autonomous;
   SignalsCalledOff called_off_autonomous;
-  // The ego's lane changes begun between trigger points 1 and 2, and whether it passed trigger
+  // The ego's lane changes begun between trigger points 1 and 2 (on a two-lane road, its passes in
+  // the oncoming lane), and whether it passed trigger
   // point 2 in a lane beside which the play is staged mirrored (director/core/stage.hpp,
   // staged_beside: a cut-in's cutter then comes from the right). Each change of lane restages a
   // play whose roles or zones lie in other lanes.
