@@ -169,14 +169,7 @@ TriggerTimes trigger_times_undirected(const ScenarioConfig& sc, std::uint64_t se
 }
 
 bool staged_mirrored(const PlayConfig& play, const EgoObservation& ego, const director::Lanes& lanes) {
-  const PlayConfig staged = director::staged_beside(play, director::staging_lane(ego, lanes), lanes);
-  for (std::size_t i = 0; i < play.roles.size(); ++i) {
-    if (staged.roles[i].lane_offset != play.roles[i].lane_offset) return true;
-  }
-  for (std::size_t i = 0; i < play.clear.size(); ++i) {
-    if (staged.clear[i].lane_offset != play.clear[i].lane_offset) return true;
-  }
-  return false;
+  return director::mirrored_beside(play, director::staging_lane(ego, lanes), lanes);
 }
 
 PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* trace, std::FILE* traffic) {

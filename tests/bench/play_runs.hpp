@@ -152,10 +152,9 @@ struct PlayRunResult {
   AboveTopSpeed above_top_autonomous;
   SignalsCalledOff called_off_autonomous;
   // The ego's lane changes begun between trigger points 1 and 2 (on a two-lane road, its passes in
-  // the oncoming lane), and whether it passed trigger
-  // point 2 in a lane beside which the play is staged mirrored (director/core/stage.hpp,
-  // staged_beside: a cut-in's cutter then comes from the right). Each change of lane restages a
-  // play whose roles or zones lie in other lanes.
+  // the oncoming lane), and whether it passed trigger point 2 in a lane beside which the play is
+  // staged mirrored (director/core/stage.hpp, staged_beside: a cut-in's cutter then comes from the
+  // right). Each change of lane restages a play whose roles or zones lie in other lanes.
   int ego_lane_changes = 0;
   bool mirrored_at_trigger2 = false;
   int created = 0;
@@ -170,8 +169,8 @@ struct PlayRunResult {
 
 inline constexpr double kBesideEgo_m = 15.0;
 
-// Whether `play`, staged beside the lane `ego` is in or moving to, is mirrored (any role's or
-// zone's lane offset negated).
+// Whether `play`, staged beside the lane `ego` is in or moving to, is mirrored (the director's
+// own decision, stage.hpp, mirrored_beside).
 bool staged_mirrored(const PlayConfig& play, const EgoObservation& ego, const director::Lanes& lanes);
 
 // `trace`: if not null, every play report of the run is printed there, one line each.

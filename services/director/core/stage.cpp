@@ -25,8 +25,12 @@ int staging_lane(const EgoObservation& ego, const Lanes& lanes) {
   return std::clamp(ego.target_lane, 0, std::max(0, lanes.of(ego.direction) - 1));
 }
 
+bool mirrored_beside(const PlayConfig& play, int ego_lane, const Lanes& lanes) {
+  return !fits(play, ego_lane, 1, lanes) && fits(play, ego_lane, -1, lanes);
+}
+
 PlayConfig staged_beside(const PlayConfig& play, int ego_lane, const Lanes& lanes) {
-  if (fits(play, ego_lane, 1, lanes) || !fits(play, ego_lane, -1, lanes)) return play;
+  if (!mirrored_beside(play, ego_lane, lanes)) return play;
   PlayConfig m = play;
   for (PlayRoleConfig& r : m.roles) {
     if (r.direction == Direction::kForward) r.lane_offset = -r.lane_offset;

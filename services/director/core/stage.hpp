@@ -61,6 +61,8 @@ int staging_lane(const EgoObservation& ego, const Lanes& lanes);
 // lane offsets and its scripted lane changes negated, left and right indicators swapped (a car
 // that cuts in from the left of an ego in the left lane cuts in from the right).
 PlayConfig staged_beside(const PlayConfig& play, int ego_lane, const Lanes& lanes);
+// Whether staged_beside mirrors `play` beside an ego in `ego_lane`.
+bool mirrored_beside(const PlayConfig& play, int ego_lane, const Lanes& lanes);
 
 // When and where the actors are aimed at: the ego at `ego_s_m` with `ego_speed_mps`, `time_s`
 // from now, which is `past_start_s` after the start (the handover). Until the last seconds before
