@@ -4,11 +4,12 @@
 #include <filesystem>
 
 #include "process_util.hpp"
+#include "../test_domains.hpp"
 
 namespace entourage::testing {
 namespace {
 
-constexpr int kDomainService = 115;  // tests run in parallel and check for leftover processes by domain
+constexpr int kDomainService = test_domain::kBadInputService;
 
 struct BadCase {
   int domain;         // each case its own (they run in parallel and check for leftover processes)
@@ -55,11 +56,11 @@ TEST_P(BadScenario, AServiceRefusesItAtStartup) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenarios, BadScenario,
-    ::testing::Values(BadCase{116, "bad_syntax.pbtxt", "bad_syntax.pbtxt:10:", "vehicle_type"},
-                      BadCase{117, "bad_negative_flow.pbtxt", "bad_negative_flow.pbtxt:18:",
+    ::testing::Values(BadCase{test_domain::kBadSyntax, "bad_syntax.pbtxt", "bad_syntax.pbtxt:10:", "vehicle_type"},
+                      BadCase{test_domain::kBadNegativeFlow, "bad_negative_flow.pbtxt", "bad_negative_flow.pbtxt:18:",
                               "demand.forward.flow_veh_per_h"},
-                      BadCase{118, "bad_zero_lanes.pbtxt", "bad_zero_lanes.pbtxt:6:", "road.lanes_forward"},
-                      BadCase{119, "bad_unknown_model.pbtxt", "bad_unknown_model.pbtxt:13:",
+                      BadCase{test_domain::kBadZeroLanes, "bad_zero_lanes.pbtxt", "bad_zero_lanes.pbtxt:6:", "road.lanes_forward"},
+                      BadCase{test_domain::kBadUnknownModel, "bad_unknown_model.pbtxt", "bad_unknown_model.pbtxt:13:",
                               "vehicle_type[0].driver.car_following"}),
     [](const ::testing::TestParamInfo<BadCase>& param) {
       std::string n = param.param.file;

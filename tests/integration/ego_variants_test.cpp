@@ -14,6 +14,7 @@
 #include <string>
 
 #include "process_util.hpp"
+#include "../test_domains.hpp"
 #include "recorded_run.hpp"
 
 namespace entourage::testing {
@@ -101,13 +102,13 @@ TEST_P(EgoVariant, TheWindowKeepsEveryInvariant) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenarios, EgoVariant,
-                         ::testing::Values(Variant{"freeway_ego_stops", 140, stood_for_a_minute},
-                                           Variant{"freeway_ego_fast", 141, mostly_near_180},
-                                           Variant{"freeway_ego_slow", 142, below_the_stream},
-                                           Variant{"rural_ego_slow", 147, below_the_rural_stream},
-                                           Variant{"rural_ego_fast", 148, overtakes_on_the_rural_road},
-                                           Variant{"freeway_probe", 149, transparent_at_80},
-                                           Variant{"rural_probe", 150, transparent_at_70_slowing_for_the_curve}),
+                         ::testing::Values(Variant{"freeway_ego_stops", test_domain::kEgoStops, stood_for_a_minute},
+                                           Variant{"freeway_ego_fast", test_domain::kEgoFast, mostly_near_180},
+                                           Variant{"freeway_ego_slow", test_domain::kEgoSlow, below_the_stream},
+                                           Variant{"rural_ego_slow", test_domain::kRuralEgoSlow, below_the_rural_stream},
+                                           Variant{"rural_ego_fast", test_domain::kRuralEgoFast, overtakes_on_the_rural_road},
+                                           Variant{"freeway_probe", test_domain::kProbe, transparent_at_80},
+                                           Variant{"rural_probe", test_domain::kRuralProbe, transparent_at_70_slowing_for_the_curve}),
                          [](const ::testing::TestParamInfo<Variant>& p) { return p.param.scenario; });
 
 }  // namespace

@@ -8,12 +8,13 @@
 #include <string>
 
 #include "process_util.hpp"
+#include "../test_domains.hpp"
 
 namespace entourage::testing {
 namespace {
 
-constexpr int kDomainLossy = 143;
-constexpr int kDomainClean = 144;
+constexpr int kDomainLossy = test_domain::kFaultLossy;
+constexpr int kDomainClean = test_domain::kFaultClean;
 
 std::string run_and_export(const std::string& dir, const std::string& env, int domain) {
   const std::string rec = dir + "/r.mcap";

@@ -12,12 +12,13 @@
 #include <thread>
 
 #include "process_util.hpp"
+#include "../test_domains.hpp"
 #include "recording/recording.hpp"
 
 namespace entourage::testing {
 namespace {
 
-constexpr int kDomain = 114;
+constexpr int kDomain = test_domain::kInterrupt;
 constexpr std::uintmax_t kRecordedBytes = 256 * 1024;
 
 TEST(Interrupt, CtrlCStopsEverythingCleanly) {

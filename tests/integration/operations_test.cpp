@@ -12,14 +12,15 @@
 #include <thread>
 
 #include "process_util.hpp"
+#include "../test_domains.hpp"
 #include "recording/recording.hpp"
 
 namespace entourage::testing {
 namespace {
 
-constexpr int kDomainExternal = 121;
-constexpr int kDomainKilled = 122;
-constexpr int kDomainMissing = 123;
+constexpr int kDomainExternal = test_domain::kOperationsExternal;
+constexpr int kDomainKilled = test_domain::kOperationsKilled;
+constexpr int kDomainMissing = test_domain::kOperationsMissing;
 
 // Starts a command in the background with its output in a file; returns its pid.
 pid_t spawn(const std::vector<std::string>& argv, const std::string& out_path) {

@@ -5,15 +5,16 @@
 #include <filesystem>
 
 #include "process_util.hpp"
+#include "../test_domains.hpp"
 #include "recording/checks.hpp"
 #include "recording/csv_tables.hpp"
 
 namespace entourage::testing {
 namespace {
 
-constexpr int kDomainLockstep = 110;
-constexpr int kDomainSplit = 111;
-constexpr int kDomainRealtime = 113;
+constexpr int kDomainLockstep = test_domain::kPipelineLockstep;
+constexpr int kDomainSplit = test_domain::kPipelineSplit;
+constexpr int kDomainRealtime = test_domain::kPipelineRealtime;
 
 std::string run_scenario(const std::string& dir, const std::string& name, int domain, const std::string& extra) {
   return bin("entourage") + " run " + source("scenarios/freeway.pbtxt") + " --quiet --domain " +

@@ -9,12 +9,13 @@
 #include <string>
 
 #include "process_util.hpp"
+#include "../test_domains.hpp"
 #include "recorded_run.hpp"
 
 namespace entourage::testing {
 namespace {
 
-constexpr int kDomain = 145;
+constexpr int kDomain = test_domain::kPlays;
 
 TEST(Plays, TheLeadVehicleBrakesPlayRunsEndToEndOverDds) {
   const std::string dir = fresh_dir("plays");

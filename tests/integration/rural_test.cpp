@@ -7,13 +7,14 @@
 #include <filesystem>
 
 #include "process_util.hpp"
+#include "../test_domains.hpp"
 #include "recorded_run.hpp"
 #include "recording/summary.hpp"
 
 namespace entourage::testing {
 namespace {
 
-constexpr int kDomainRural = 120;
+constexpr int kDomainRural = test_domain::kRural;
 
 TEST(Rural, OvertakingsInTheOncomingLaneWithoutCollisionsAndSlowerInTheCurve) {
   const std::string dir = fresh_dir("rural");

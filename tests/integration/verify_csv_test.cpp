@@ -9,12 +9,13 @@
 #include <sstream>
 
 #include "process_util.hpp"
+#include "../test_domains.hpp"
 #include "recording/csv_tables.hpp"
 
 namespace entourage::testing {
 namespace {
 
-constexpr int kDomainVerifyCsv = 130;
+constexpr int kDomainVerifyCsv = test_domain::kVerifyCsv;
 
 // The report without its last line but one, "recording: PATH (N samples)", which names the input;
 // that line's sample count is returned in *samples.

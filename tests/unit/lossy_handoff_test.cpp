@@ -31,11 +31,12 @@
 
 #include "dds/region_shell.hpp"
 #include "dds_test_util.hpp"
+#include "../test_domains.hpp"
 
 namespace entourage::dds {
 namespace {
 
-constexpr int kDomain = 146;
+constexpr int kDomain = entourage::testing::test_domain::kLossyHandoff;
 constexpr auto kDiscoveryTimeout = std::chrono::seconds(10);
 // The writer's heartbeat (0.1 s under faults) asks for acknowledgements; a lost state is repaired
 // within a few periods.
