@@ -1,0 +1,39 @@
+#include "launcher/domain_ports.hpp"
+
+#include <sstream>
+
+namespace entourage::launcher {
+
+PortRange domain_ports(int domain) {
+  const int base = kPortBase + kDomainGain * domain;
+  return {base, base + kUserUnicastOffset + kParticipantGain * (kParticipantsChecked - 1)};
+}
+
+std::optional<PortRange> parse_port_range(const std::string& text) {
+  std::istringstream in(text);
+  PortRange r;
+  std::string rest;
+  if (!(in >> r.first >> r.last) || (in >> rest) || r.first < 1 || r.last > 65535 || r.first > r.last) {
+    return std::nullopt;
+  }
+  return r;
+}
+
+int highest_clear_domain(const PortRange& ephemeral) {
+  return (ephemeral.first - 1 - domain_ports(0).last) / kDomainGain;  // -1 (none) below port 7474
+}
+
+std::string ephemeral_clash(int domain, const PortRange& ephemeral) {
+  const PortRange ports = domain_ports(domain);
+  if (ports.last < ephemeral.first || ports.first > ephemeral.last) return "";
+  std::ostringstream m;
+  m << "DDS domain " << domain << " listens on UDP ports " << ports.first << "-" << ports.last
+    << ", inside this machine's ephemeral port range " << ephemeral.first << "-" << ephemeral.last
+    << " (/proc/sys/net/ipv4/ip_local_port_range): a random port of any process on this host can take one of"
+       " them and stop discovery in this domain";
+  const int highest = highest_clear_domain(ephemeral);
+  if (highest >= 0) m << "; domains 0-" << highest << " are clear of it here";
+  return m.str();
+}
+
+}  // namespace entourage::launcher

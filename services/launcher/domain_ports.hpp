@@ -1,0 +1,41 @@
+#pragma once
+// The UDP ports a DDS domain listens on, against the machine's ephemeral port range.
+//
+// Fast DDS's default port mapping (RTPS 2.2, 9.6.1.1): port base 7400, domain gain 250,
+// participant gain 2, offsets 0 (discovery multicast), 1 (user multicast), 10 and 11 (discovery
+// and user unicast, plus 2 per participant id). The kernel gives every socket bound to port 0 (the
+// send sockets of every process on the host) a random port from the ephemeral range
+// (/proc/sys/net/ipv4/ip_local_port_range, 32768-60999 by default). If one of those holds a
+// domain's discovery multicast port before a participant binds it, that participant discovers
+// nobody: with the range's defaults, domains 0-101 are clear of it.
+
+#include <optional>
+#include <string>
+
+namespace entourage::launcher {
+
+struct PortRange {
+  int first = 0;
+  int last = 0;  // inclusive
+};
+
+constexpr int kPortBase = 7400;
+constexpr int kDomainGain = 250;
+constexpr int kParticipantGain = 2;
+constexpr int kUserUnicastOffset = 11;  // the highest of the four offsets
+// Participant ids on one host checked: the launcher, its services, a simulator and some more.
+constexpr int kParticipantsChecked = 32;
+
+// The well-known ports of `domain` for the first kParticipantsChecked participants on a host.
+PortRange domain_ports(int domain);
+
+// The contents of ip_local_port_range ("32768\t60999\n"), or nullopt if they are not two ports.
+std::optional<PortRange> parse_port_range(const std::string& text);
+
+// The highest domain whose ports all lie below the ephemeral range (-1: none does).
+int highest_clear_domain(const PortRange& ephemeral);
+
+// A warning if the domain's ports fall in the ephemeral range, else empty.
+std::string ephemeral_clash(int domain, const PortRange& ephemeral);
+
+}  // namespace entourage::launcher
