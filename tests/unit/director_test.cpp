@@ -196,6 +196,42 @@ TEST(PlayPhases, ARoleBesideTheEgoIsCastForWhereItsWayLeadsFirst) {
   EXPECT_NE(casts_of(vehicle(8, 2062.0, 25.0, 1)).find("cutter = vehicle 8"), std::string::npos);
 }
 
+TEST(PlayPhases, ACutterLeftBehindTheEgoByItsLaneChangeIsCastAgainFromTheOtherLane) {
+  // A cutter 12 m ahead of the ego in the lane to its left at the start (3 km, 40 s ahead at
+  // 25 m/s), vehicle 7 (at 28 m/s) cast for it at once. At 1 s the ego begins to change into the left lane:
+  // the play is mirrored (the cutter now comes from the right lane, stage.hpp), and vehicle 9
+  // comes into the world 70 m ahead of the ego in the right lane. Vehicle 7, 10 m behind the ego,
+  // would have to get past the ego into the lane the ego leaves: vehicle 9 is cast instead, at
+  // once. Vehicle 7 62 m ahead of the ego keeps the role, and so does the one behind where nothing
+  // of the traffic can play it (nothing is created for it then).
+  ScenarioConfig sc = testing::minimal_scenario();
+  PlayConfig play = lead_play();
+  play.roles[0].name = "cutter";
+  play.roles[0].lane_offset = 1;
+  play.roles[0].ahead_m = 12.0;
+  sc.plays = {play};
+  auto casts_of = [&](double cutter_ahead_m, bool right_lane_candidate) {
+    DirectorCore core(sc, 1);
+    StepInput in;
+    std::string casts;
+    for (Step k = 0; k < 20; ++k) {
+      in.step = k;
+      const double ego_s = 2000.0 + 2.5 * static_cast<double>(k);
+      in.ego = testing::ego_at(k, ego_s, 25.0);
+      if (k >= 10) in.ego.target_lane = 1;
+      in.world_prev = {vehicle(7, ego_s + cutter_ahead_m, 28.0, 1)};
+      if (right_lane_candidate && k >= 10) in.world_prev.push_back(vehicle(9, ego_s + 70.0, 25.0, 0));
+      for (const PlayReport& r : core.step(in).reports) {
+        if (r.detail.rfind("cast: ", 0) == 0) casts += r.detail + "; ";
+      }
+    }
+    return casts;
+  };
+  EXPECT_EQ(casts_of(-10.0, true), "cast: cutter = vehicle 7; cast: cutter = vehicle 9; ");
+  EXPECT_EQ(casts_of(62.0, true), "cast: cutter = vehicle 7; ");
+  EXPECT_EQ(casts_of(-10.0, false), "cast: cutter = vehicle 7; ");
+}
+
 TEST(PlayPhases, AnActorThatMissesItsStartByFarIsReplacedOnlyWhileTheEgoKeepsItsSpeed) {
   // The lead play from 2 km on; vehicle 7, 40 m ahead of the ego at its speed, is cast at once.
   // From 1 s on it is seen 600 m ahead (it would have to fall back 560 m, beyond the transport

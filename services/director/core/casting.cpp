@@ -95,6 +95,11 @@ bool stuck_between(const Slot& slot, double s_m, VehicleId self, const CastingSi
   });
 }
 
+bool passes_ego_to(const Slot& slot, const ObservedVehicle& v, const CastingSituation& at) {
+  return passes_ego_into_its_lane(
+      slot, between(slot, v.id, v.s_m, at.time_to_start_s, at.world, at.ego, at.ego_s_at_handover_m), at);
+}
+
 double casting_cost(const Slot& slot, const PlayRoleConfig& role, const ObservedVehicle& v, const CastingSituation& at,
                     const DirectorConfig& cfg) {
   if (v.direction != slot.direction || !type_fits(role, v) || at.time_to_start_s <= 0.0) return kInf;

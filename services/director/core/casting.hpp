@@ -44,6 +44,11 @@ struct CastingSituation {
 // 27, stop 43.)
 bool stuck_between(const Slot& slot, double s_m, VehicleId self, const CastingSituation& at);
 
+// Whether `v` must get past the ego into the ego's lane to reach `slot` (a cutter left behind the
+// ego when the ego changed lanes and the play was mirrored: stage.hpp, staged_beside). Casting
+// counts it as costly as a creation (casting_cost).
+bool passes_ego_to(const Slot& slot, const ObservedVehicle& v, const CastingSituation& at);
+
 // The cost of `v` playing a role with start `slot` (infinite: it cannot).
 double casting_cost(const Slot& slot, const PlayRoleConfig& role, const ObservedVehicle& v, const CastingSituation& at,
                     const DirectorConfig& cfg);

@@ -118,9 +118,14 @@ class PlayRun {
     double position_error_m = 0.0;
     double speed_error_mps = 0.0;
     double hopeless_since_s = -1.0;  // since when its plan misses the start by far (< 0: it does not)
+    bool restaged = false;  // its start moved to another lane as the play was mirrored: cast again now
   };
 
   void prepare(const PlayInput& in, PlayOutput& out);
+  // Whether the ego's lane change has just mirrored the stage (stage.hpp, staged_beside): marks the
+  // cast roles whose start moved to the ego's other side (Role::restaged); casting then gives the
+  // role to another vehicle where its actor would have to get past the ego (play_casting.cpp).
+  bool mark_restaged(const PlayInput& in);
   // The ego's leader for the start-time estimate where it cannot get past it (stage.hpp,
   // unpassable_leader), at the speed it is expected to keep.
   std::optional<LeaderAhead> ego_leader(const PlayInput& in) const;
@@ -223,6 +228,7 @@ class PlayRun {
 
   PlayConfig play_;
   PlayConfig staged_;  // play_ as staged beside the ego's lane (stage.hpp, staged_beside)
+  std::optional<bool> mirrored_;  // whether staged_ is play_ mirrored (unset before the first preparation)
   PlaySetting setting_;
   PlayPhase phase_ = PlayPhase::kWaiting;
   StartTimeEstimator estimator_;

@@ -27,16 +27,25 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
   std::vector<PlayRoleConfig> sub_roles;
   std::vector<Slot> sub_slots;
   std::vector<CastingSituation> sub_at;
+  std::vector<bool> restaged_only;  // cast again only because it was restaged: nothing is created for it
   for (std::size_t r = 0; r < roles_.size(); ++r) {
-    if (!this->open(roles_[r], in)) continue;
-    open.push_back(r);
-    sub_roles.push_back(play_.roles[r]);
+    const bool due = this->open(roles_[r], in);
+    if (!due && !roles_[r].restaged) continue;
     const Waypoint way = way_to(slots[r], aim.time_s, staged_.roles[r], in.ego.direction, staged_lane(in),
                                 time_to_start_s, setting_.director);
-    sub_slots.push_back(way.slot);
     CastingSituation role_at = at;
     role_at.time_to_start_s = way.time_s;
     role_at.ego_s_at_handover_m = aim.ego_s_m - sign(in.ego.direction) * aim.ego_speed_mps * (aim.time_s - way.time_s);
+    // A role whose start moved to the other side of the ego as the ego changed lanes keeps its
+    // actor unless the actor would now have to get past the ego into the lane the ego is leaving
+    // (stop 49: the cutter, cast in the left lane behind the ego, was left behind it when the ego
+    // moved over, and in the 15-40 s left it could not get past the ego and the right lane's column).
+    const ObservedVehicle* actor = find(in, roles_[r].actor);
+    if (!due && (actor == nullptr || !passes_ego_to(way.slot, *actor, role_at))) continue;
+    open.push_back(r);
+    restaged_only.push_back(!due);
+    sub_roles.push_back(play_.roles[r]);
+    sub_slots.push_back(way.slot);
     sub_at.push_back(role_at);
   }
   // Vehicles this play cleared off the stage may be cast too (one in the way of an actor that
@@ -58,7 +67,9 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
       sent_.erase(role.actor);
     };
     const int type = rc.type_index >= 0 ? rc.type_index : 0;
-    const auto place = chosen[k] >= 0 ? std::nullopt
+    // A restaged role keeps its actor rather than have one created for it: it is cast again when
+    // it misses its start by far, as any actor.
+    const auto place = chosen[k] >= 0 || restaged_only[k] ? std::nullopt
                                       : hidden_placement(sub_slots[k], in.factory.length_m(type), sub_at[k], window,
                                                          setting_.director);
     // Nowhere to create one on one lane per direction: the vehicle of the traffic that fits best,
