@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "core_test_util.hpp"
@@ -20,6 +22,43 @@ using testing::at_trigger2;
 using testing::kInf;
 using testing::lead_play;
 using testing::vehicle;
+
+// The casting reports of one step of the director, each as "cast: ...; ".
+std::string casts_in(const DirectorOutput& out) {
+  std::string casts;
+  for (const PlayReport& r : out.reports) {
+    if (r.detail.rfind("cast: ", 0) == 0) casts += r.detail + "; ";
+  }
+  return casts;
+}
+
+// The casting reports of 20 steps of the director, the ego at 25 m/s from 2000 m in the right
+// lane; `scene` fills in each step's world (and may change the ego) from the step and the ego's place.
+std::string casts_in_2_s(const ScenarioConfig& sc, const std::function<void(Step, double, StepInput&)>& scene) {
+  DirectorCore core(sc, 1);
+  StepInput in;
+  std::string casts;
+  for (Step k = 0; k < 20; ++k) {
+    in.step = k;
+    const double ego_s = 2000.0 + 2.5 * static_cast<double>(k);
+    in.ego = testing::ego_at(k, ego_s, 25.0);
+    scene(k, ego_s, in);
+    casts += casts_in(core.step(in));
+  }
+  return casts;
+}
+
+// The minimal scenario with one play: a cutter 12 m ahead of the ego in the lane to its left at
+// the start (3 km, 40 s ahead at 25 m/s).
+ScenarioConfig cutter_scenario() {
+  ScenarioConfig sc = testing::minimal_scenario();
+  PlayConfig play = lead_play();
+  play.roles[0].name = "cutter";
+  play.roles[0].lane_offset = 1;
+  play.roles[0].ahead_m = 12.0;
+  sc.plays = {play};
+  return sc;
+}
 
 TEST(Staging, ARoleBesideTheEgoWaitsAheadOfItsStartUntilTheApproach) {
   PlayConfig play = lead_play();
@@ -163,31 +202,15 @@ TEST(PlayPhases, WaitingPreparingThenFailedWithTheReasonWhenNoActorCouldBeCast) 
 }
 
 TEST(PlayPhases, ARoleBesideTheEgoIsCastForWhereItsWayLeadsFirst) {
-  // A cutter 12 m ahead of the ego in the lane to its left at the start (3 km, 40 s ahead at
-  // 25 m/s). Its way leads first to 50 m ahead of its start 20 s before the start
+  // The cutter's way leads first to 50 m ahead of its start 20 s before the start
   // (beside_wait_ahead_m, beside_approach_s): 2562 m in 20 s.
-  ScenarioConfig sc = testing::minimal_scenario();
-  PlayConfig play = lead_play();
-  play.roles[0].name = "cutter";
-  play.roles[0].lane_offset = 1;
-  play.roles[0].ahead_m = 12.0;
-  sc.plays = {play};
+  const ScenarioConfig sc = cutter_scenario();
   auto casts_of = [&](const ObservedVehicle& candidate) {
-    DirectorCore core(sc, 1);
-    StepInput in;
-    std::string casts;
-    for (Step k = 0; k < 20; ++k) {
-      in.step = k;
-      const double ego_s = 2000.0 + 2.5 * static_cast<double>(k);
-      in.ego = testing::ego_at(k, ego_s, 25.0);
+    return casts_in_2_s(sc, [&](Step k, double, StepInput& in) {
       ObservedVehicle v = candidate;
       v.s_m += 2.5 * static_cast<double>(k);
       in.world_prev = {v};
-      for (const PlayReport& r : core.step(in).reports) {
-        if (r.detail.rfind("cast: ", 0) == 0) casts += r.detail + "; ";
-      }
-    }
-    return casts;
+    });
   };
   // 150 m behind the ego it would reach its start at 29 m/s on average, 4 above the start's speed,
   // but the place it is aimed at first only at 35.6 m/s, beyond the transport band: not cast.
@@ -197,35 +220,19 @@ TEST(PlayPhases, ARoleBesideTheEgoIsCastForWhereItsWayLeadsFirst) {
 }
 
 TEST(PlayPhases, ACutterLeftBehindTheEgoByItsLaneChangeIsCastAgainFromTheOtherLane) {
-  // A cutter 12 m ahead of the ego in the lane to its left at the start (3 km, 40 s ahead at
-  // 25 m/s), vehicle 7 (at 28 m/s) cast for it at once. At 1 s the ego begins to change into the left lane:
-  // the play is mirrored (the cutter now comes from the right lane, stage.hpp), and vehicle 9
-  // comes into the world 70 m ahead of the ego in the right lane. Vehicle 7, 10 m behind the ego,
-  // would have to get past the ego into the lane the ego leaves: vehicle 9 is cast instead, at
-  // once. Vehicle 7 62 m ahead of the ego keeps the role, and so does the one behind where nothing
-  // of the traffic can play it (nothing is created for it then).
-  ScenarioConfig sc = testing::minimal_scenario();
-  PlayConfig play = lead_play();
-  play.roles[0].name = "cutter";
-  play.roles[0].lane_offset = 1;
-  play.roles[0].ahead_m = 12.0;
-  sc.plays = {play};
+  // Vehicle 7 (at 28 m/s) is cast as the cutter at once. At 1 s the ego begins to change into
+  // the left lane: the play is mirrored (the cutter now comes from the right lane, stage.hpp), and
+  // vehicle 9 comes into the world 70 m ahead of the ego in the right lane. Vehicle 7, 10 m behind
+  // the ego, would have to get past the ego into the lane the ego leaves: vehicle 9 is cast
+  // instead, at once. Vehicle 7 62 m ahead of the ego keeps the role, and so does the one behind
+  // where nothing of the traffic can play it (nothing is created for it then).
+  const ScenarioConfig sc = cutter_scenario();
   auto casts_of = [&](double cutter_ahead_m, bool right_lane_candidate) {
-    DirectorCore core(sc, 1);
-    StepInput in;
-    std::string casts;
-    for (Step k = 0; k < 20; ++k) {
-      in.step = k;
-      const double ego_s = 2000.0 + 2.5 * static_cast<double>(k);
-      in.ego = testing::ego_at(k, ego_s, 25.0);
+    return casts_in_2_s(sc, [&](Step k, double ego_s, StepInput& in) {
       if (k >= 10) in.ego.target_lane = 1;
       in.world_prev = {vehicle(7, ego_s + cutter_ahead_m, 28.0, 1)};
       if (right_lane_candidate && k >= 10) in.world_prev.push_back(vehicle(9, ego_s + 70.0, 25.0, 0));
-      for (const PlayReport& r : core.step(in).reports) {
-        if (r.detail.rfind("cast: ", 0) == 0) casts += r.detail + "; ";
-      }
-    }
-    return casts;
+    });
   };
   EXPECT_EQ(casts_of(-10.0, true), "cast: cutter = vehicle 7; cast: cutter = vehicle 9; ");
   EXPECT_EQ(casts_of(62.0, true), "cast: cutter = vehicle 7; ");
@@ -261,9 +268,7 @@ TEST(PlayPhases, AnActorThatMissesItsStartByFarIsReplacedOnlyWhileTheEgoKeepsIts
       const double lead_s = ego_s + 40.0;
       in.world_prev = k < 10 ? std::vector<ObservedVehicle>{vehicle(7, lead_s, ego_speed)}
                              : std::vector<ObservedVehicle>{vehicle(7, ego_s + 600.0, ego_speed), vehicle(8, lead_s, ego_speed)};
-      for (const PlayReport& r : core.step(in).reports) {
-        if (r.detail.rfind("cast: ", 0) == 0) casts += r.detail + "; ";
-      }
+      casts += casts_in(core.step(in));
       ego_s += ego_speed * 0.1;
       ego_speed += ego_accel_mps2 * 0.1;
     }
