@@ -3,7 +3,7 @@
 // share one (tests run in parallel, and each checks for its leftover processes by domain).
 //
 // Every domain here stays at or below 101. Fast DDS listens on well-known ports
-// 7400 + 250·domain + offsets (services/launcher/domain_ports.hpp); from domain 102 on those lie
+// 7400 + 250·domain + offsets (common/dds/domain_ports.hpp); from domain 102 on those lie
 // inside Linux's ephemeral port range (32768-60999 by default), where the kernel also picks the
 // random ports of every process's send sockets. A send socket that happens to hold a test's
 // multicast discovery port first keeps that test's participants from ever discovering each other

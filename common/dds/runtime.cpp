@@ -11,6 +11,8 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "dds/domain_ports.hpp"
+
 #ifndef ENTOURAGE_DEFAULT_QOS_FILE
 #define ENTOURAGE_DEFAULT_QOS_FILE "entourage_qos.xml"
 #endif
@@ -132,6 +134,7 @@ int service_main(int argc, char** argv, ServiceId id, const std::string& summary
   logger->set_pattern("[%H:%M:%S.%e] [%n] [%^%l%$] %v");
   logger->set_level(spdlog::level::from_str(opt.log_level));
   spdlog::set_default_logger(logger);
+  if (const std::string w = ephemeral_clash_here(opt.domain); !w.empty()) spdlog::warn("{}", w);
   install_shutdown_handlers();
   try {
     return body(ctx);

@@ -7,16 +7,14 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <thread>
 
 #include "cli/args.hpp"
+#include "dds/domain_ports.hpp"
 #include "dds/runtime.hpp"
 #include "launcher/commands.hpp"
-#include "launcher/domain_ports.hpp"
 #include "launcher/monitor.hpp"
 #include "launcher/process.hpp"
 #include "launcher/report.hpp"
@@ -36,18 +34,6 @@ constexpr Step kRealtimeLateSteps = 10;        // a service this far behind the 
 constexpr double kProgressPeriodTty_s = 0.5;
 constexpr double kProgressPeriodLog_s = 10.0;
 constexpr std::size_t kLogTailLines = 15;
-
-// A domain whose ports lie in the ephemeral range works until a random port takes one
-// (domain_ports.hpp): said at the start, not failed, since the range is the host's to set.
-void warn_of_ephemeral_ports(int domain) {
-  std::ifstream in("/proc/sys/net/ipv4/ip_local_port_range");
-  std::stringstream text;
-  text << in.rdbuf();
-  const auto ephemeral = parse_port_range(text.str());
-  if (!ephemeral) return;
-  const std::string warning = ephemeral_clash(domain, *ephemeral);
-  if (!warning.empty()) std::cerr << "entourage run: warning: " << warning << "\n";
-}
 
 struct RunOptions {
   std::string scenario;
@@ -384,7 +370,11 @@ int run_command(int argc, char** argv) {
     std::cerr << "entourage run: --domain must be in 0-232\n";
     return 2;
   }
-  warn_of_ephemeral_ports(opt.domain);
+  // A domain whose ports lie in the ephemeral range works until a random port takes one
+  // (dds/domain_ports.hpp): said at the start, not failed, since the range is the host's to set.
+  if (const std::string w = dds::ephemeral_clash_here(opt.domain); !w.empty()) {
+    std::cerr << "entourage run: warning: " << w << "\n";
+  }
   scenario::Loaded sc = scenario::load_file(opt.scenario);
   if (!sc.ok()) {
     for (const auto& p : sc.problems) std::cerr << p.to_string() << "\n";

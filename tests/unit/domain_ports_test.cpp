@@ -1,11 +1,11 @@
-// The launcher's check of a DDS domain's well-known ports against the ephemeral port range
-// (services/launcher/domain_ports.hpp), and that every test domain is clear of the default range.
+// The check of a DDS domain's well-known ports against the ephemeral port range
+// (common/dds/domain_ports.hpp), and that every test domain is clear of the default range.
 #include <gtest/gtest.h>
 
 #include "../test_domains.hpp"
-#include "launcher/domain_ports.hpp"
+#include "dds/domain_ports.hpp"
 
-namespace entourage::launcher {
+namespace entourage::dds {
 namespace {
 
 const PortRange kLinuxDefault{32768, 60999};
@@ -53,4 +53,4 @@ TEST(DomainPorts, EveryTestDomainIsClearOfTheDefaultRange) {
 }
 
 }  // namespace
-}  // namespace entourage::launcher
+}  // namespace entourage::dds

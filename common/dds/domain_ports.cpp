@@ -1,8 +1,9 @@
-#include "launcher/domain_ports.hpp"
+#include "dds/domain_ports.hpp"
 
+#include <fstream>
 #include <sstream>
 
-namespace entourage::launcher {
+namespace entourage::dds {
 
 PortRange domain_ports(int domain) {
   const int base = kPortBase + kDomainGain * domain;
@@ -36,4 +37,12 @@ std::string ephemeral_clash(int domain, const PortRange& ephemeral) {
   return m.str();
 }
 
-}  // namespace entourage::launcher
+std::string ephemeral_clash_here(int domain) {
+  std::ifstream in(kEphemeralRangeFile);
+  std::stringstream text;
+  text << in.rdbuf();
+  const auto ephemeral = parse_port_range(text.str());
+  return ephemeral ? ephemeral_clash(domain, *ephemeral) : "";
+}
+
+}  // namespace entourage::dds

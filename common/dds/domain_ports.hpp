@@ -7,12 +7,13 @@
 // send sockets of every process on the host) a random port from the ephemeral range
 // (/proc/sys/net/ipv4/ip_local_port_range, 32768-60999 by default). If one of those holds a
 // domain's discovery multicast port before a participant binds it, that participant discovers
-// nobody: with the range's defaults, domains 0-101 are clear of it.
+// nobody: with the range's defaults, domains 0-101 are clear of it. `entourage run` and every
+// service warn at the start when their domain is not (the run goes on: the range is the host's).
 
 #include <optional>
 #include <string>
 
-namespace entourage::launcher {
+namespace entourage::dds {
 
 struct PortRange {
   int first = 0;
@@ -38,4 +39,9 @@ int highest_clear_domain(const PortRange& ephemeral);
 // A warning if the domain's ports fall in the ephemeral range, else empty.
 std::string ephemeral_clash(int domain, const PortRange& ephemeral);
 
-}  // namespace entourage::launcher
+// The same against this host's range (kEphemeralRangeFile); empty where it cannot be read.
+std::string ephemeral_clash_here(int domain);
+
+constexpr const char* kEphemeralRangeFile = "/proc/sys/net/ipv4/ip_local_port_range";
+
+}  // namespace entourage::dds
