@@ -21,7 +21,8 @@ std::optional<PortRange> parse_port_range(const std::string& text) {
 }
 
 int highest_clear_domain(const PortRange& ephemeral) {
-  return (ephemeral.first - 1 - domain_ports(0).last) / kDomainGain;  // -1 (none) below port 7474
+  const int room = ephemeral.first - 1 - domain_ports(0).last;  // below it, beyond domain 0's ports
+  return room < 0 ? -1 : room / kDomainGain;
 }
 
 std::string ephemeral_clash(int domain, const PortRange& ephemeral) {
@@ -30,7 +31,7 @@ std::string ephemeral_clash(int domain, const PortRange& ephemeral) {
   std::ostringstream m;
   m << "DDS domain " << domain << " listens on UDP ports " << ports.first << "-" << ports.last
     << ", inside this machine's ephemeral port range " << ephemeral.first << "-" << ephemeral.last
-    << " (/proc/sys/net/ipv4/ip_local_port_range): a random port of any process on this host can take one of"
+    << " (" << kEphemeralRangeFile << "): a random port of any process on this host can take one of"
        " them and stop discovery in this domain";
   const int highest = highest_clear_domain(ephemeral);
   if (highest >= 0) m << "; domains 0-" << highest << " are clear of it here";

@@ -1,7 +1,7 @@
 #pragma once
 // The UDP ports a DDS domain listens on, against the machine's ephemeral port range.
 //
-// Fast DDS's default port mapping (RTPS 2.2, 9.6.1.1): port base 7400, domain gain 250,
+// Fast DDS's default port mapping (the RTPS specification's default port numbers, 9.6.1): port base 7400, domain gain 250,
 // participant gain 2, offsets 0 (discovery multicast), 1 (user multicast), 10 and 11 (discovery
 // and user unicast, plus 2 per participant id). The kernel gives every socket bound to port 0 (the
 // send sockets of every process on the host) a random port from the ephemeral range
@@ -26,6 +26,7 @@ constexpr int kParticipantGain = 2;
 constexpr int kUserUnicastOffset = 11;  // the highest of the four offsets
 // Participant ids on one host checked: the launcher, its services, a simulator and some more.
 constexpr int kParticipantsChecked = 32;
+constexpr const char* kEphemeralRangeFile = "/proc/sys/net/ipv4/ip_local_port_range";
 
 // The well-known ports of `domain` for the first kParticipantsChecked participants on a host.
 PortRange domain_ports(int domain);
@@ -41,7 +42,5 @@ std::string ephemeral_clash(int domain, const PortRange& ephemeral);
 
 // The same against this host's range (kEphemeralRangeFile); empty where it cannot be read.
 std::string ephemeral_clash_here(int domain);
-
-constexpr const char* kEphemeralRangeFile = "/proc/sys/net/ipv4/ip_local_port_range";
 
 }  // namespace entourage::dds

@@ -41,6 +41,9 @@ TEST(DomainPorts, WarnOnlyWhereTheRangeReaches) {
   EXPECT_TRUE(ephemeral_clash(215, kLinuxDefault).empty());   // 61150 on: above the range
   // A host with the range moved up clears more domains; one that starts below every domain, none.
   EXPECT_TRUE(ephemeral_clash(130, PortRange{49152, 65535}).empty());
+  EXPECT_EQ(highest_clear_domain(PortRange{7474, 65535}), 0);
+  EXPECT_EQ(highest_clear_domain(PortRange{7473, 65535}), -1);
+  EXPECT_EQ(highest_clear_domain(PortRange{1024, 65535}), -1);
   const std::string none = ephemeral_clash(0, PortRange{1024, 65535});
   EXPECT_FALSE(none.empty());
   EXPECT_EQ(none.find("domains 0-"), std::string::npos) << none;

@@ -1,7 +1,8 @@
 // The director's casting, a phase of a play's preparation (play.hpp): the roles still without an
-// actor are cast jointly (casting.hpp, cast_roles), a role no vehicle of the traffic can play gets a
-// vehicle created out of the driver's sight (hidden_placement), and on one lane per direction,
-// where there is no such place, the vehicle of the traffic that fits best (cheapest_fit).
+// actor (or whose actor misses by far, or was left behind the ego by its lane change) are cast
+// jointly (casting.hpp, cast_roles), a role no vehicle of the traffic can play gets a vehicle
+// created out of the driver's sight (hidden_placement), and on one lane per direction, where there
+// is no such place, the vehicle of the traffic that fits best (cheapest_fit).
 #include <algorithm>
 #include <string>
 #include <vector>
