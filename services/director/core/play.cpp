@@ -260,7 +260,7 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
   const Aim aim = aim_of(pred.time_s, play_.trigger2_s_m, pred.speed_mps, in.ego, kAimHorizon_s);
   // The lane the ego is in, or moving to.
   staged_ = staged_beside(play_, staged_lane(in), setting_.lanes);
-  const bool restaged = mark_restaged(in);
+  const std::vector<bool> restaged = restaged_roles(in);
   const std::vector<Slot> slots = slots_of(staged_, in.ego.direction, staged_lane(in), aim, setting_.lanes);
   // Actors that left the world (beyond the window) are lost: their roles are cast again.
   for (Role& r : roles_) {
@@ -269,13 +269,12 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
     sent_.erase(r.actor);
     r = Role{};
   }
-  const bool uncast = std::any_of(roles_.begin(), roles_.end(), [&](const Role& r) { return open(r, in) || r.restaged; });
+  const bool uncast = std::any_of(roles_.begin(), roles_.end(), [&](const Role& r) { return open(r, in); });
   std::string cast_detail;
-  if (uncast && (restaged || in.ego.time_s - last_cast_attempt_s_ >= kCastInterval_s - 1e-9)) {
+  if (!restaged.empty() || (uncast && in.ego.time_s - last_cast_attempt_s_ >= kCastInterval_s - 1e-9)) {
     last_cast_attempt_s_ = in.ego.time_s;
-    cast_detail = cast(in, slots, aim, pred.time_s, out);
+    cast_detail = cast(in, slots, aim, pred.time_s, restaged, out);
   }
-  for (Role& r : roles_) r.restaged = false;
   const bool all_cast = std::none_of(roles_.begin(), roles_.end(), [](const Role& r) { return r.actor == kNoVehicle; });
   if (all_cast && phase_ == PlayPhase::kPreparing) {
     phase_ = PlayPhase::kCast;
@@ -288,18 +287,18 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
   if (!cast_detail.empty()) report(in, out, "cast: " + cast_detail);
 }
 
-bool PlayRun::mark_restaged(const PlayInput& in) {
+std::vector<bool> PlayRun::restaged_roles(const PlayInput& in) {
   const bool mirrored = mirrored_beside(play_, staged_lane(in), setting_.lanes);
   const bool flipped = mirrored_.has_value() && *mirrored_ != mirrored;
   mirrored_ = mirrored;
-  bool any = false;
-  for (std::size_t r = 0; flipped && r < roles_.size(); ++r) {
+  if (!flipped) return {};
+  std::vector<bool> restaged(roles_.size(), false);
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
     const PlayRoleConfig& rc = play_.roles[r];
-    if (roles_[r].actor == kNoVehicle || rc.direction != Direction::kForward || rc.lane_offset == 0) continue;
-    roles_[r].restaged = true;
-    any = true;
+    restaged[r] = roles_[r].actor != kNoVehicle && rc.direction == Direction::kForward && rc.lane_offset != 0;
   }
-  return any;
+  const bool any = std::find(restaged.begin(), restaged.end(), true) != restaged.end();
+  return any ? restaged : std::vector<bool>{};
 }
 
 void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, double aim_time_s, double time_to_start_s,

@@ -118,14 +118,14 @@ class PlayRun {
     double position_error_m = 0.0;
     double speed_error_mps = 0.0;
     double hopeless_since_s = -1.0;  // since when its plan misses the start by far (< 0: it does not)
-    bool restaged = false;  // its start moved to another lane as the play was mirrored: cast again now
   };
 
   void prepare(const PlayInput& in, PlayOutput& out);
-  // Whether the ego's lane change has just mirrored the stage (stage.hpp, staged_beside): marks the
-  // cast roles whose start moved to the ego's other side (Role::restaged); casting then gives the
-  // role to another vehicle where its actor would have to get past the ego (play_casting.cpp).
-  bool mark_restaged(const PlayInput& in);
+  // Per role, whether the ego's lane change has just mirrored the stage (stage.hpp, staged_beside)
+  // and moved the start of the role, cast, to the ego's other side: casting then gives the role to
+  // another vehicle where its actor would have to get past the ego (play_casting.cpp). Empty where
+  // nothing was mirrored.
+  std::vector<bool> restaged_roles(const PlayInput& in);
   // The ego's leader for the start-time estimate where it cannot get past it (stage.hpp,
   // unpassable_leader), at the speed it is expected to keep.
   std::optional<LeaderAhead> ego_leader(const PlayInput& in) const;
@@ -139,9 +139,10 @@ class PlayRun {
   // it cannot pass, the estimate drives it behind that leader (start_time.hpp): counted there as
   // well, the slowdown cost the slow truck play, whose ego slows behind the truck, 3 of 100 runs.
   bool ego_slowed_down(const PlayInput& in) const;
-  // Casts the roles without an actor; returns what it did ("" for nothing).
+  // Casts the roles without an actor, and the restaged ones whose actor would have to get past the
+  // ego (`restaged`: restaged_roles); returns what it did ("" for nothing).
   std::string cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
-                   PlayOutput& out);
+                   const std::vector<bool>& restaged, PlayOutput& out);
   void move_actors(const PlayInput& in, const std::vector<Slot>& slots, double aim_time_s, double time_to_start_s,
                    PlayOutput& out);
   void clear_zones(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,

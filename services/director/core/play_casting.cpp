@@ -13,7 +13,7 @@
 namespace entourage::director {
 
 std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
-                          PlayOutput& out) {
+                          const std::vector<bool>& restaged, PlayOutput& out) {
   const CastingSituation at{in.world,       in.ego,
                             aim.time_s,     aim.ego_s_m,
                             setting_.lanes, setting_.types,
@@ -31,7 +31,7 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
   std::vector<bool> restaged_only;  // cast again only because it was restaged: nothing is created for it
   for (std::size_t r = 0; r < roles_.size(); ++r) {
     const bool due = this->open(roles_[r], in);
-    if (!due && !roles_[r].restaged) continue;
+    if (!due && (restaged.empty() || !restaged[r])) continue;
     const Waypoint way = way_to(slots[r], aim.time_s, staged_.roles[r], in.ego.direction, staged_lane(in),
                                 time_to_start_s, setting_.director);
     CastingSituation role_at = at;
