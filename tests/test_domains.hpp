@@ -9,11 +9,11 @@
 // multicast discovery port first keeps that test's participants from ever discovering each other
 // (seen once at stop 48, when the tests used domains 110-150: six processes in domain 130,
 // "readers 0/5" for 60 s). Below 32768 no random port can take them; tests/unit/domain_ports_test.cpp
-// checks every domain here against the default range.
+// checks every domain here against the default range as well.
+
+#include "dds/domain_ports.hpp"
 
 namespace entourage::testing::test_domain {
-
-constexpr int kMaxSafeDomain = 101;  // 7400 + 250·101 + offsets < 32768 (participant ids below 53)
 
 enum : int {
   kPipelineLockstep = 50,
@@ -44,6 +44,7 @@ enum : int {
   kEnd  // one past the last
 };
 
-static_assert(kEnd - 1 <= kMaxSafeDomain, "a test domain's ports would fall in the ephemeral range");
+static_assert(kEnd - 1 <= dds::highest_clear_domain(dds::kLinuxEphemeralDefault),
+              "a test domain's ports would fall in the ephemeral range");
 
 }  // namespace entourage::testing::test_domain

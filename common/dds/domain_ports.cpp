@@ -5,11 +5,6 @@
 
 namespace entourage::dds {
 
-PortRange domain_ports(int domain) {
-  const int base = kPortBase + kDomainGain * domain;
-  return {base, base + kUserUnicastOffset + kParticipantGain * (kParticipantsChecked - 1)};
-}
-
 std::optional<PortRange> parse_port_range(const std::string& text) {
   std::istringstream in(text);
   PortRange r;
@@ -18,11 +13,6 @@ std::optional<PortRange> parse_port_range(const std::string& text) {
     return std::nullopt;
   }
   return r;
-}
-
-int highest_clear_domain(const PortRange& ephemeral) {
-  const int room = ephemeral.first - 1 - domain_ports(0).last;  // below it, beyond domain 0's ports
-  return room < 0 ? -1 : room / kDomainGain;
 }
 
 std::string ephemeral_clash(int domain, const PortRange& ephemeral) {

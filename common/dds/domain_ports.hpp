@@ -29,13 +29,22 @@ constexpr int kParticipantsChecked = 32;
 constexpr const char* kEphemeralRangeFile = "/proc/sys/net/ipv4/ip_local_port_range";
 
 // The well-known ports of `domain` for the first kParticipantsChecked participants on a host.
-PortRange domain_ports(int domain);
+constexpr PortRange domain_ports(int domain) {
+  const int base = kPortBase + kDomainGain * domain;
+  return {base, base + kUserUnicastOffset + kParticipantGain * (kParticipantsChecked - 1)};
+}
+
+// Linux's default ephemeral port range (ip_local_port_range).
+constexpr PortRange kLinuxEphemeralDefault{32768, 60999};
 
 // The contents of ip_local_port_range ("32768\t60999\n"), or nullopt if they are not two ports.
 std::optional<PortRange> parse_port_range(const std::string& text);
 
 // The highest domain whose ports all lie below the ephemeral range (-1: none does).
-int highest_clear_domain(const PortRange& ephemeral);
+constexpr int highest_clear_domain(const PortRange& ephemeral) {
+  const int room = ephemeral.first - 1 - domain_ports(0).last;  // below it, beyond domain 0's ports
+  return room < 0 ? -1 : room / kDomainGain;
+}
 
 // A warning if the domain's ports fall in the ephemeral range, else empty.
 std::string ephemeral_clash(int domain, const PortRange& ephemeral);

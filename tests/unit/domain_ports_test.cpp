@@ -8,8 +8,6 @@
 namespace entourage::dds {
 namespace {
 
-const PortRange kLinuxDefault{32768, 60999};
-
 TEST(DomainPorts, FollowTheDefaultPortMapping) {
   EXPECT_EQ(domain_ports(0).first, 7400);
   EXPECT_EQ(domain_ports(130).first, 7400 + 250 * 130);  // 39900: the flaky test's discovery port
@@ -30,15 +28,15 @@ TEST(DomainPorts, ReadTheKernelsRange) {
 }
 
 TEST(DomainPorts, WarnOnlyWhereTheRangeReaches) {
-  EXPECT_EQ(highest_clear_domain(kLinuxDefault), 101);
-  EXPECT_TRUE(ephemeral_clash(0, kLinuxDefault).empty());
-  EXPECT_TRUE(ephemeral_clash(101, kLinuxDefault).empty());
-  const std::string w = ephemeral_clash(102, kLinuxDefault);
+  EXPECT_EQ(highest_clear_domain(kLinuxEphemeralDefault), 101);
+  EXPECT_TRUE(ephemeral_clash(0, kLinuxEphemeralDefault).empty());
+  EXPECT_TRUE(ephemeral_clash(101, kLinuxEphemeralDefault).empty());
+  const std::string w = ephemeral_clash(102, kLinuxEphemeralDefault);
   EXPECT_NE(w.find("ports 32900-32973"), std::string::npos) << w;
   EXPECT_NE(w.find("domains 0-101"), std::string::npos) << w;
-  EXPECT_FALSE(ephemeral_clash(130, kLinuxDefault).empty());
-  EXPECT_FALSE(ephemeral_clash(214, kLinuxDefault).empty());  // 60900-60973
-  EXPECT_TRUE(ephemeral_clash(215, kLinuxDefault).empty());   // 61150 on: above the range
+  EXPECT_FALSE(ephemeral_clash(130, kLinuxEphemeralDefault).empty());
+  EXPECT_FALSE(ephemeral_clash(214, kLinuxEphemeralDefault).empty());  // 60900-60973
+  EXPECT_TRUE(ephemeral_clash(215, kLinuxEphemeralDefault).empty());   // 61150 on: above the range
   // A host with the range moved up clears more domains; one that starts below every domain, none.
   EXPECT_TRUE(ephemeral_clash(130, PortRange{49152, 65535}).empty());
   EXPECT_EQ(highest_clear_domain(PortRange{7474, 65535}), 0);
@@ -51,7 +49,7 @@ TEST(DomainPorts, WarnOnlyWhereTheRangeReaches) {
 
 TEST(DomainPorts, EveryTestDomainIsClearOfTheDefaultRange) {
   for (int d = testing::test_domain::kPipelineLockstep; d < testing::test_domain::kEnd; ++d) {
-    EXPECT_TRUE(ephemeral_clash(d, kLinuxDefault).empty()) << "test domain " << d;
+    EXPECT_TRUE(ephemeral_clash(d, kLinuxEphemeralDefault).empty()) << "test domain " << d;
   }
 }
 
