@@ -49,7 +49,8 @@ double bumper_gap_m(const ObservedVehicle& a, const ObservedVehicle& b) {
 // The traffic trace: every kTrafficTraceSteps steps, the vehicles from kTraceBehind_m behind the
 // ego to kTraceAhead_m ahead of it, each as [<]ID@OFFSET/SPEED/L LANE/k TYPE INDEX (< : oncoming;
 // the type's index in the scenario's vehicle types), then a lane change's target or the
-// indicator, and the director's control (T, C, R).
+// indicator, and the director's control (T, C, R, W), a transported vehicle's with the desired
+// speed it was last given (T24.3; T* its own) and the lane it was asked into (T*:1).
 constexpr Step kTrafficTraceSteps = 20;
 constexpr double kTraceBehind_m = 300.0;
 constexpr double kTraceAhead_m = 600.0;
@@ -65,7 +66,7 @@ const char* control_mark(ControlMode m) {
   return "?";
 }
 
-void trace_traffic(std::FILE* out, const StepInput& in) {
+void trace_traffic(std::FILE* out, const StepInput& in, const std::map<VehicleId, ActorControl>& last_commands) {
   std::vector<ObservedVehicle> near;
   for (const ObservedVehicle& v : in.world_prev) {
     const double ahead_m = sign(in.ego.direction) * (v.s_m - in.ego.s_m);
@@ -84,6 +85,16 @@ void trace_traffic(std::FILE* out, const StepInput& in) {
       std::fprintf(out, "%s", v.indicator == 1 ? "<" : ">");
     }
     std::fprintf(out, "%s", control_mark(v.control));
+    const auto cmd = last_commands.find(v.id);
+    if (v.control == ControlMode::kTransported && cmd != last_commands.end()) {
+      const ActorControl& c = cmd->second;
+      if (c.speed_mps == kOwnDesiredSpeed_mps) {
+        std::fprintf(out, "*");
+      } else {
+        std::fprintf(out, "%.1f", c.speed_mps);
+      }
+      if (c.lane >= 0) std::fprintf(out, ":%d", c.lane);
+    }
   }
   std::fprintf(out, "\n");
 }
@@ -180,6 +191,7 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
   std::map<VehicleId, std::pair<Step, double>> last_accel;  // micro-owned vehicles: (step, accel)
   std::set<std::pair<VehicleId, VehicleId>> overlapping;     // pairs seen overlapping (each counted once)
   std::set<VehicleId> ego_contacts;
+  std::map<VehicleId, ActorControl> last_commands;  // for the traffic trace
   std::map<VehicleId, double> beside_since_s;  // vehicles beside the ego now: since when
   struct SignalOn {
     int lane = 0;          // its lane when the indicator came on
@@ -209,6 +221,7 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
       if (in.ego_prev) right_passes.observe(*in.ego_prev, in.world_prev, r.passed_on_right, trace);
     }
     if (r.trigger2_time_s >= 0.0 && r.traffic_speed_mps < 0.0) r.traffic_speed_mps = around_ego.mean_mps();
+    for (const ActorCommand& c : out.director.commands) last_commands[c.vehicle] = c.control;
     for (const Handoff& h : out.director.births) {
       ++r.created;
       if (w.in_inner(h.vehicle.s_m)) ++r.created_in_view;
@@ -259,7 +272,7 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
       }
     }
     if (traffic != nullptr && k % kTrafficTraceSteps == 0 && r.final_phase != director::PlayPhase::kWaiting) {
-      trace_traffic(traffic, in);
+      trace_traffic(traffic, in, last_commands);
     }
     // How vehicles in the inner region drove (micro-owned, consecutive steps), and overlaps.
     const bool preparing = r.final_phase == director::PlayPhase::kPreparing || r.final_phase == director::PlayPhase::kCast ||
