@@ -253,8 +253,8 @@ bool moves_in_late(const ObservedVehicle& v, const Slot& s, const ClearingSituat
 // "Faster" with a margin (kTopSpeedMargin_mps): an actor's start speed relative to the ego's rises
 // with the ego's, and the ego often speeds up after v has moved over (since stop 50: with the
 // start speed compared with the top speed alone, a truck sent into the cutter's lane while the
-// cutter was to start 0.1-1 m/s below the truck's top was caught by the cutter once the ego sped up
-// by 2-4 m/s, as in cut-in seeds 13, 31, 137 and 188).
+// cutter was to start 0-0.9 m/s below the truck's top was caught by the cutter once the ego sped
+// up, as in cut-in seeds 13, 31, 137 and 188).
 bool slower_than_an_actor_of(const ObservedVehicle& v, int lane, const ClearingSituation& at, double zones_front_p) {
   const double top_mps = top_speed_of(at.types, v.type_index);
   return std::any_of(at.slots.begin(), at.slots.end(), [&](const Slot& s) {
