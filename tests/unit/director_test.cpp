@@ -398,8 +398,10 @@ TEST(Aim, FarFromTheStartActorsAimAtTriggerPoint2NearItAShortHorizonAhead) {
   EXPECT_DOUBLE_EQ(near.ego_s_m, 3000.0);  // 2900 + 25 m/s x 4 s
   EXPECT_DOUBLE_EQ(near.past_start_s, 3.0);
   // A role slower than the ego by 5 m/s stands 40 m ahead at the start, 25 m ahead 3 s later; an
-  // oncoming one at 20 m/s comes 45 m/s closer each second, and is aimed half its position
-  // tolerance (50 m) beyond its start: late rather than early, the handover may wait for it.
+  // oncoming one at 20 m/s comes 45 m/s closer each second. The play is aimed late rather than
+  // early (the handover may wait for an actor still too far): by 25 / 45 s, which puts the oncoming
+  // role half its position tolerance (50 m) beyond its start, and the slower one 5 m/s times that
+  // beyond its own (within its 10 m tolerance either way).
   PlayConfig play = lead_play();
   play.roles[0].speed_mps = -5.0;
   PlayRoleConfig oncoming;
@@ -410,16 +412,53 @@ TEST(Aim, FarFromTheStartActorsAimAtTriggerPoint2NearItAShortHorizonAhead) {
   oncoming.speed_mps = 20.0;
   oncoming.position_tolerance_m = 50.0;
   play.roles.push_back(oncoming);
+  const double late_s = 25.0 / 45.0;
+  EXPECT_DOUBLE_EQ(late_aim_s(play, Direction::kForward, 25.0), late_s);
   const std::vector<Slot> slots = slots_of(play, Direction::kForward, 0, near, Lanes{1, 1});
-  EXPECT_DOUBLE_EQ(slots[0].s_m, 3000.0 + 40.0 - 5.0 * 3.0);
+  EXPECT_DOUBLE_EQ(slots[0].s_m, 3000.0 + 40.0 + 5.0 * late_s - 5.0 * 3.0);
   EXPECT_DOUBLE_EQ(slots[0].speed_mps, 20.0);
   EXPECT_DOUBLE_EQ(slots[1].s_m, 3000.0 + 300.0 + 25.0 - 45.0 * 3.0);
   // For an ego driving the other way, beyond its start the other way.
   const Aim at_start{10.0, 3000.0, 25.0, 0.0};
   const std::vector<Slot> other = slots_of(play, Direction::kBackward, 0, at_start, Lanes{1, 1});
-  EXPECT_DOUBLE_EQ(other[0].s_m, 3000.0 - 40.0);
+  EXPECT_DOUBLE_EQ(other[0].s_m, 3000.0 - 40.0 - 5.0 * late_s);
   EXPECT_DOUBLE_EQ(other[1].s_m, 3000.0 - 300.0 - 25.0);
   EXPECT_EQ(other[1].direction, Direction::kForward);
+}
+
+TEST(Aim, OnlyRolesTheEgoClosesOnAreAimedBeyondTheirStart) {
+  const Aim at_start{10.0, 3000.0, 30.0, 0.0};
+  // Alone, a role 8 m/s slower than the ego (the stopped vehicle's, at 80 km/h before it stops)
+  // is aimed half its 20 m tolerance beyond its start: 10 m further ahead.
+  PlayConfig stopper = lead_play();
+  stopper.roles[0].ahead_m = 250.0;
+  stopper.roles[0].speed_mps = -8.0;
+  stopper.roles[0].position_tolerance_m = 20.0;
+  EXPECT_DOUBLE_EQ(late_aim_s(stopper, Direction::kForward, 30.0), 10.0 / 8.0);
+  EXPECT_DOUBLE_EQ(slots_of(stopper, Direction::kForward, 0, at_start, Lanes{2, 0})[0].s_m, 3000.0 + 250.0 + 10.0);
+  // One faster than the ego behind it: 5 m further behind.
+  PlayConfig chaser = lead_play();
+  chaser.roles[0].ahead_m = -60.0;
+  chaser.roles[0].speed_mps = 4.0;
+  EXPECT_DOUBLE_EQ(slots_of(chaser, Direction::kForward, 0, at_start, Lanes{2, 0})[0].s_m, 3000.0 - 60.0 - 5.0);
+  // The ego does not close on a role at its speed (the lead vehicle), one faster ahead of it (the
+  // cutter) or one slower behind it: they are aimed at their start, and a play of only such roles
+  // is not aimed late.
+  PlayConfig others = lead_play();
+  others.roles[0].speed_mps = 0.0;
+  PlayRoleConfig cutter = others.roles[0];
+  cutter.ahead_m = 12.0;
+  cutter.speed_mps = 1.4;
+  PlayRoleConfig follower = others.roles[0];
+  follower.ahead_m = -30.0;
+  follower.speed_mps = -2.0;
+  others.roles.push_back(cutter);
+  others.roles.push_back(follower);
+  EXPECT_DOUBLE_EQ(late_aim_s(others, Direction::kForward, 30.0), 0.0);
+  const std::vector<Slot> slots = slots_of(others, Direction::kForward, 0, at_start, Lanes{2, 0});
+  EXPECT_DOUBLE_EQ(slots[0].s_m, 3040.0);
+  EXPECT_DOUBLE_EQ(slots[1].s_m, 3012.0);
+  EXPECT_DOUBLE_EQ(slots[2].s_m, 2970.0);
 }
 
 }  // namespace

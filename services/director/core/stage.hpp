@@ -86,11 +86,19 @@ Aim aim_of(double time_to_start_s, double trigger2_s_m, double speed_at_start_mp
 // offset, never below standing.
 double start_speed_mps(const PlayRoleConfig& role, double ego_speed_mps);
 
-// An oncoming role's slot lies this share of its position tolerance beyond its start. It closes
-// on the ego at the sum of both speeds, so an ego a second later than estimated finds it some
-// 20 m too close; the handover may wait for one that is still too far (handover_wait_s), never
-// for one already too close. Where the ego comes as estimated, the actor is within its tolerance.
-inline constexpr double kOncomingLateShare = 0.5;
+// Actors are aimed late rather than early. The ego closes on some roles: a slower one ahead of it
+// (the stopped vehicle's at 80 km/h, the slow truck), an oncoming one (at the sum of both speeds),
+// a faster one behind it. An ego a second later at trigger point 2 than the last estimate finds
+// such a role that much nearer than its start, and the handover may wait for an actor still too
+// far (handover_wait_s), never for one already too near: the ego only comes nearer. So the play is
+// aimed `late_aim_s` late: each such role's slot lies as far beyond its start as the ego closes on
+// it in that time. The time is the one that puts the role with the least room for it
+// kLateShare of its position tolerance beyond its start (the oncoming cars of the slow truck,
+// 25 of 50 m; the truck then some 4 of 15 m); where the ego comes as estimated every actor is
+// within its tolerance, and one a moment early waits for them. Roles the ego does not close on
+// (the lead vehicle at the ego's speed, the cutter 5 km/h faster) are aimed at their start.
+inline constexpr double kLateShare = 0.5;
+double late_aim_s(const PlayConfig& play, Direction ego_direction, double ego_speed_mps);
 
 // The slots of `play`'s roles at `aim`, the ego in `ego_lane`. A role stands `ahead_m` from the
 // ego at the start and drives on at its start speed: at a time past the start it is that much
