@@ -98,6 +98,7 @@ double start_speed_mps(const PlayRoleConfig& role, double ego_speed_mps);
 // within its tolerance, and one a moment early waits for them. Roles the ego does not close on
 // (the lead vehicle at the ego's speed, the cutter 5 km/h faster) are aimed at their start.
 inline constexpr double kLateShare = 0.5;
+// That time (s) with the ego at `ego_speed_mps`; 0 where the ego closes on none of the roles.
 double late_aim_s(const PlayConfig& play, Direction ego_direction, double ego_speed_mps);
 
 // The slots of `play`'s roles at `aim`, the ego in `ego_lane`. A role stands `ahead_m` from the
