@@ -62,18 +62,21 @@ double start_speed_mps(const PlayRoleConfig& role, double ego_speed_mps) {
 
 namespace {
 Direction role_direction(const PlayRoleConfig& role, Direction ego_direction) {
-  return role.direction == Direction::kForward ? ego_direction
-                                               : Direction{static_cast<std::int8_t>(-sign(ego_direction))};
+  return role.direction == Direction::kForward ? ego_direction : opposite(ego_direction);
+}
+
+// A role's speed along the ego's direction less the ego's (an oncoming role's start speed takes it
+// the other way).
+double relative_speed_mps(Direction direction, Direction ego_direction, double speed_mps, double ego_speed_mps) {
+  return sign(direction) * sign(ego_direction) * speed_mps - ego_speed_mps;
 }
 
 // +1 for a role ahead of the ego at the start (or beside it), -1 for one behind.
 double ahead_sign(const PlayRoleConfig& role) { return role.ahead_m >= 0.0 ? 1.0 : -1.0; }
 
-// How fast the ego closes on a role driving its start speed (m/s; 0 where it does not): a slower
-// role ahead of the ego, an oncoming one, a faster one behind it.
-double closing_speed_mps(const PlayRoleConfig& role, Direction ego_direction, Direction direction,
-                         double speed_mps, double ego_speed_mps) {
-  const double relative_mps = sign(direction) * sign(ego_direction) * speed_mps - ego_speed_mps;
+// How fast the ego closes on a role at `relative_mps` (m/s; 0 where it does not): a slower role
+// ahead of the ego, an oncoming one, a faster one behind it.
+double closing_speed_mps(const PlayRoleConfig& role, double relative_mps) {
   return std::max(0.0, -relative_mps * ahead_sign(role));
 }
 }  // namespace
@@ -81,8 +84,9 @@ double closing_speed_mps(const PlayRoleConfig& role, Direction ego_direction, Di
 double late_aim_s(const PlayConfig& play, Direction ego_direction, double ego_speed_mps) {
   double late_s = std::numeric_limits<double>::infinity();
   for (const PlayRoleConfig& r : play.roles) {
-    const double closing_mps = closing_speed_mps(r, ego_direction, role_direction(r, ego_direction),
-                                                 start_speed_mps(r, ego_speed_mps), ego_speed_mps);
+    const double closing_mps = closing_speed_mps(
+        r, relative_speed_mps(role_direction(r, ego_direction), ego_direction, start_speed_mps(r, ego_speed_mps),
+                              ego_speed_mps));
     if (closing_mps > 0.0) late_s = std::min(late_s, kLateShare * r.position_tolerance_m / closing_mps);
   }
   return std::isfinite(late_s) ? late_s : 0.0;
@@ -99,10 +103,8 @@ std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int 
     const int lane = r.direction == Direction::kForward ? ego_lane + r.lane_offset : r.lane_offset;
     s.lane = std::clamp(lane, 0, std::max(0, lanes.of(s.direction) - 1));
     s.speed_mps = start_speed_mps(r, aim.ego_speed_mps);
-    // Along the ego's direction: an oncoming role's start speed takes it the other way.
-    const double relative_mps = sign(s.direction) * sign(ego_direction) * s.speed_mps - aim.ego_speed_mps;
-    const double late_m =
-        ahead_sign(r) * late_s * closing_speed_mps(r, ego_direction, s.direction, s.speed_mps, aim.ego_speed_mps);
+    const double relative_mps = relative_speed_mps(s.direction, ego_direction, s.speed_mps, aim.ego_speed_mps);
+    const double late_m = ahead_sign(r) * late_s * closing_speed_mps(r, relative_mps);  // further from the ego
     s.s_m = aim.ego_s_m + sign(ego_direction) * (r.ahead_m + late_m + relative_mps * aim.past_start_s);
     out.push_back(s);
   }

@@ -125,8 +125,9 @@ ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>&
 // its type wishes to drive, less 1 m/s (a truck sent ahead of the cutter was caught once the ego
 // sped up, stops 45 and 50; ClearingSituation::slots), unless, in the last kLateMoveWindow_s, the
 // ego follows it at its speed and that actor is in place already (stop 46): onto the free lane
-// first, then into such a lane, then by its speed in its own. Never into a lane where an actor is alongside it (from just
-// behind it to the room the actor keeps ahead): it would cut in on the actor.
+// first, then into such a lane, then by its speed in its own. Never into a lane where an actor is
+// alongside it (from just behind it to the room the actor keeps ahead): it would cut in on the
+// actor.
 struct ActorPlace {
   int lane = 0;
   double s_m = 0.0;
