@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,25 +69,73 @@ TEST(Staging, ARoleBesideTheEgoWaitsAheadOfItsStartUntilTheApproach) {
   const Lanes lanes{2, 0};
   const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), lanes)[0];
   // 60 s before the start: aimed at where its start is 20 s before it, 50 m further on, by then.
-  const Waypoint early = way_to(slot, 60.0, play.roles[0], Direction::kForward, 0, 60.0, cfg);
+  const Waypoint early = way_to(slot, at_trigger2(play, 25.0), play.roles[0], Direction::kForward, 0, lanes, 60.0, cfg);
   EXPECT_DOUBLE_EQ(early.time_s, 40.0);
   EXPECT_DOUBLE_EQ(early.slot.s_m, slot.s_m + 50.0 - 25.0 * 20.0);
   EXPECT_EQ(early.slot.lane, slot.lane);
   EXPECT_DOUBLE_EQ(early.slot.speed_mps, slot.speed_mps);
   // Within the approach: the start itself.
-  const Waypoint late = way_to(slot, 15.0, play.roles[0], Direction::kForward, 0, 15.0, cfg);
+  const Aim within{15.0, 3000.0, 25.0, 0.0};
+  const Waypoint late = way_to(slot, within, play.roles[0], Direction::kForward, 0, lanes, 15.0, cfg);
   EXPECT_DOUBLE_EQ(late.time_s, 15.0);
   EXPECT_DOUBLE_EQ(late.slot.s_m, slot.s_m);
   // A role in the ego's own lane, one far ahead of it, or no wait configured: the start.
   PlayConfig lead = lead_play();
   const Slot own = slots_of(lead, Direction::kForward, 0, at_trigger2(lead, 25.0), lanes)[0];
-  EXPECT_DOUBLE_EQ(way_to(own, 60.0, lead.roles[0], Direction::kForward, 0, 60.0, cfg).slot.s_m, own.s_m);
+  const Aim lead_aim = at_trigger2(lead, 25.0);
+  EXPECT_DOUBLE_EQ(way_to(own, lead_aim, lead.roles[0], Direction::kForward, 0, lanes, 60.0, cfg).slot.s_m, own.s_m);
   PlayRoleConfig far = play.roles[0];
   far.ahead_m = kBesideReach_m + 1.0;
-  EXPECT_DOUBLE_EQ(way_to(slot, 60.0, far, Direction::kForward, 0, 60.0, cfg).time_s, 60.0);
+  EXPECT_DOUBLE_EQ(way_to(slot, at_trigger2(play, 25.0), far, Direction::kForward, 0, lanes, 60.0, cfg).time_s, 60.0);
   DirectorConfig off = cfg;
   off.beside_wait_ahead_m = 0.0;
-  EXPECT_DOUBLE_EQ(way_to(slot, 60.0, play.roles[0], Direction::kForward, 0, 60.0, off).slot.s_m, slot.s_m);
+  const Aim aim = at_trigger2(play, 25.0);
+  EXPECT_DOUBLE_EQ(way_to(slot, aim, play.roles[0], Direction::kForward, 0, lanes, 60.0, off).slot.s_m, slot.s_m);
+}
+
+TEST(Staging, ARoleTheEgoClosesOnDrivesAtItsStartSpeedForTheLastSecondsBeforeTheStart) {
+  // A stopper 250 m ahead at 8 m/s below the ego's 30: 60 s before the start its way leads to
+  // where its start is kSettleEarly_s before the start, by then (22 m/s x 10 s nearer).
+  PlayConfig play = lead_play();
+  play.roles[0].ahead_m = 250.0;
+  play.roles[0].speed_mps = -8.0;
+  const DirectorConfig cfg;
+  const Lanes lanes{2, 0};
+  const Aim aim = at_trigger2(play, 30.0);
+  const Slot slot = slots_of(play, Direction::kForward, 0, aim, lanes)[0];
+  const Waypoint early = way_to(slot, aim, play.roles[0], Direction::kForward, 0, lanes, 60.0, cfg);
+  EXPECT_DOUBLE_EQ(early.time_s, 60.0 - kSettleEarly_s);
+  EXPECT_DOUBLE_EQ(early.slot.s_m, slot.s_m - 22.0 * kSettleEarly_s);
+  EXPECT_DOUBLE_EQ(early.slot.speed_mps, 22.0);
+  EXPECT_EQ(early.slot.lane, slot.lane);
+  // In the last kSettleEarly_s: the start itself.
+  const Aim near{kSettleEarly_s, 3000.0, 30.0, 0.0};
+  const Waypoint late = way_to(slot, near, play.roles[0], Direction::kForward, 0, lanes, kSettleEarly_s, cfg);
+  EXPECT_DOUBLE_EQ(late.time_s, kSettleEarly_s);
+  EXPECT_DOUBLE_EQ(late.slot.s_m, slot.s_m);
+  // The ego closing on it by kSettleClosing_mps or less, a slower role behind the ego, and an
+  // oncoming one: the start, by the aim's time.
+  PlayConfig slow = play;
+  slow.roles[0].speed_mps = -kSettleClosing_mps;
+  const Slot slow_slot = slots_of(slow, Direction::kForward, 0, aim, lanes)[0];
+  EXPECT_DOUBLE_EQ(way_to(slow_slot, aim, slow.roles[0], Direction::kForward, 0, lanes, 60.0, cfg).time_s, 60.0);
+  PlayConfig behind = play;
+  behind.roles[0].ahead_m = -60.0;
+  const Slot behind_slot = slots_of(behind, Direction::kForward, 0, aim, lanes)[0];
+  EXPECT_DOUBLE_EQ(way_to(behind_slot, aim, behind.roles[0], Direction::kForward, 0, lanes, 60.0, cfg).slot.s_m,
+                   behind_slot.s_m);
+  PlayConfig oncoming = play;
+  oncoming.roles[0].direction = Direction::kBackward;
+  oncoming.roles[0].absolute_speed = true;
+  oncoming.roles[0].speed_mps = 22.0;
+  const Lanes rural{1, 1};
+  const Slot oncoming_slot = slots_of(oncoming, Direction::kForward, 0, aim, rural)[0];
+  EXPECT_DOUBLE_EQ(way_to(oncoming_slot, aim, oncoming.roles[0], Direction::kForward, 0, rural, 60.0, cfg).time_s,
+                   60.0);
+  // On one lane per direction (the slow truck): the traffic behind it could not pass it in a lane
+  // of its own direction, and would queue behind it for those seconds.
+  const Slot one_lane_slot = slots_of(play, Direction::kForward, 0, aim, rural)[0];
+  EXPECT_DOUBLE_EQ(way_to(one_lane_slot, aim, play.roles[0], Direction::kForward, 0, rural, 60.0, cfg).time_s, 60.0);
 }
 
 TEST(Staging, AnEgoOvertakingInTheOncomingLaneKeepsThePlayStagedBesideItsOwnLane) {
@@ -309,6 +358,69 @@ TEST(PlayPhases, AnActorIsNeverAskedAboveItsTypesTopSpeed) {
   ASSERT_GT(commands, 0);
   EXPECT_GT(highest_mps, 40.0);  // it is asked to speed up
   EXPECT_LE(highest_mps, top_mps + 1e-9);
+}
+
+// A stopper play (250 m ahead of the ego, 8 m/s slower, 20 m tolerance: aimed 10 m beyond its
+// start) on an empty road, the ego at 30 m/s from trigger point 1 (2000 m) to trigger point 2
+// (3000 m). The director creates the stopper out of sight; from `ahead0_m` ahead of the ego at
+// 30 m/s (a car of the traffic), it drives at the speed it is asked for, changing it by at most
+// 1 m/s^2. Its speeds over the last `last_s` before the start, and where it is then.
+struct StopperRun {
+  double lowest_mps = kInf;
+  double highest_mps = 0.0;
+  double ahead_at_start_m = -kInf;  // of the ego
+  int casts = 0;                    // casting reports (one more for each actor given up)
+};
+StopperRun run_stopper(double ahead0_m, double last_s) {
+  ScenarioConfig sc = testing::minimal_scenario();
+  PlayConfig play = lead_play();
+  play.roles[0].ahead_m = 250.0;
+  play.roles[0].speed_mps = -8.0;
+  play.roles[0].position_tolerance_m = 20.0;
+  sc.plays = {play};
+  DirectorCore core(sc, 1);
+  StepInput in;
+  StopperRun run;
+  std::optional<ObservedVehicle> actor;
+  double asked_mps = -1.0;
+  const double dt = 0.1;
+  const double ego_mps = 30.0;
+  double ego_s = play.trigger1_s_m;
+  for (Step k = 0; ego_s < play.trigger2_s_m; ++k) {
+    in.step = k;
+    in.ego = testing::ego_at(k, ego_s, ego_mps);
+    in.world_prev.clear();
+    if (actor) in.world_prev.push_back(*actor);
+    const DirectorOutput out = core.step(in);
+    for (const PlayReport& r : out.reports) run.casts += r.detail.rfind("cast: ", 0) == 0 ? 1 : 0;
+    for (const Handoff& h : out.births) {
+      if (!actor) actor = vehicle(h.vehicle.id, ego_s + ahead0_m, 30.0, h.vehicle.lane);
+    }
+    for (const ActorCommand& c : out.commands) {
+      if (actor && c.vehicle == actor->id && c.control.mode == ControlMode::kTransported) asked_mps = c.control.speed_mps;
+    }
+    ego_s += ego_mps * dt;
+    if (!actor || asked_mps < 0.0) continue;
+    actor->speed_mps = std::clamp(asked_mps, actor->speed_mps - dt, actor->speed_mps + dt);
+    actor->s_m += actor->speed_mps * dt;
+    if ((play.trigger2_s_m - ego_s) / ego_mps <= last_s) {
+      run.lowest_mps = std::min(run.lowest_mps, actor->speed_mps);
+      run.highest_mps = std::max(run.highest_mps, actor->speed_mps);
+    }
+  }
+  if (actor) run.ahead_at_start_m = actor->s_m - ego_s;
+  return run;
+}
+
+TEST(PlayPhases, AStopperDrivesItsLastSecondsAtItsStartSpeedOnItsStartsTrack) {
+  // From 460 m ahead of the ego at 30 m/s, 33 s before the start: it drives the last 10 s within
+  // 1 m/s of its start speed, 22 m/s (planned to change just in time, it was still slowing down
+  // from 23.5 m/s in them), and is in place at the start, the one actor cast.
+  const StopperRun run = run_stopper(460.0, kSettleEarly_s - 0.5);
+  EXPECT_EQ(run.casts, 1);
+  EXPECT_GT(run.lowest_mps, 21.0);
+  EXPECT_LT(run.highest_mps, 23.0);
+  EXPECT_NEAR(run.ahead_at_start_m, 260.0, 5.0);
 }
 
 // A play driven to trigger point 2 with one vehicle cast as the lead, then the ego `past_m`

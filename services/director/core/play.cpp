@@ -281,7 +281,7 @@ void PlayRun::prepare(const PlayInput& in, PlayOutput& out) {
   } else if (all_cast && phase_ == PlayPhase::kCast) {
     phase_ = PlayPhase::kTransporting;
   }
-  move_actors(in, slots, aim.time_s, pred.time_s, out);
+  move_actors(in, slots, aim, pred.time_s, out);
   clear_zones(in, slots, aim, pred.time_s, out);
   open_oncoming_gap(in, out);
   if (!cast_detail.empty()) report(in, out, "cast: " + cast_detail);
@@ -301,7 +301,7 @@ std::vector<bool> PlayRun::restaged_roles(const PlayInput& in) {
   return any ? restaged : std::vector<bool>{};
 }
 
-void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, double aim_time_s, double time_to_start_s,
+void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
                           PlayOutput& out) {
   for (std::size_t r = 0; r < roles_.size(); ++r) {
     Role& role = roles_[r];
@@ -310,8 +310,8 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, d
     if (v == nullptr) continue;  // a created vehicle not seen yet
     const double type_accel = accel_of(setting_.types, v->type_index);
     const double rate = transport_rate_mps2(setting_.director, type_accel);
-    const Waypoint way = way_to(slots[r], aim_time_s, staged_.roles[r], in.ego.direction, staged_lane(in),
-                                time_to_start_s, setting_.director);
+    const Waypoint way = way_to(slots[r], aim, staged_.roles[r], in.ego.direction, staged_lane(in),
+                                setting_.lanes, time_to_start_s, setting_.director);
     TransportCommand t = transport(way.slot, *v, way.time_s, role.command_mps, in.dt_s, in.world, in.ego,
                                    setting_.lanes, setting_.director, rate, type_accel);
     const PlayRoleConfig& rc = staged_.roles[r];

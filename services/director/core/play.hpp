@@ -143,7 +143,7 @@ class PlayRun {
   // ego (`restaged`: restaged_roles); returns what it did ("" for nothing).
   std::string cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
                    const std::vector<bool>& restaged, PlayOutput& out);
-  void move_actors(const PlayInput& in, const std::vector<Slot>& slots, double aim_time_s, double time_to_start_s,
+  void move_actors(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
                    PlayOutput& out);
   void clear_zones(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
                    PlayOutput& out);

@@ -32,8 +32,8 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
   for (std::size_t r = 0; r < roles_.size(); ++r) {
     const bool due = this->open(roles_[r], in);
     if (!due && (restaged.empty() || !restaged[r])) continue;
-    const Waypoint way = way_to(slots[r], aim.time_s, staged_.roles[r], in.ego.direction, staged_lane(in),
-                                time_to_start_s, setting_.director);
+    const Waypoint way = way_to(slots[r], aim, staged_.roles[r], in.ego.direction, staged_lane(in),
+                                setting_.lanes, time_to_start_s, setting_.director);
     CastingSituation role_at = at;
     role_at.time_to_start_s = way.time_s;
     role_at.ego_s_at_handover_m = aim.ego_s_m - sign(in.ego.direction) * aim.ego_speed_mps * (aim.time_s - way.time_s);

@@ -111,13 +111,32 @@ std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int 
   return out;
 }
 
-Waypoint way_to(const Slot& slot, double aim_time_s, const PlayRoleConfig& role, Direction ego_direction, int ego_lane,
-                double time_to_start_s, const DirectorConfig& cfg) {
+namespace {
+// Does a role settle early (way_to): of the ego's direction, ahead of the ego, the ego closing on
+// it by more than kSettleClosing_mps, with a lane of its direction beside it for the traffic
+// behind it to pass in?
+bool settles_early(const Slot& slot, const PlayRoleConfig& role, Direction ego_direction, double ego_speed_mps,
+                   const Lanes& lanes) {
+  if (role.direction != Direction::kForward || role.ahead_m <= 0.0 || lanes.of(slot.direction) < 2) return false;
+  const double relative_mps = relative_speed_mps(slot.direction, ego_direction, slot.speed_mps, ego_speed_mps);
+  return closing_speed_mps(role, relative_mps) > kSettleClosing_mps;
+}
+}  // namespace
+
+Waypoint way_to(const Slot& slot, const Aim& aim, const PlayRoleConfig& role, Direction ego_direction, int ego_lane,
+                const Lanes& lanes, double time_to_start_s, const DirectorConfig& cfg) {
   const bool beside = slot.direction == ego_direction && slot.lane != ego_lane && std::abs(role.ahead_m) <= kBesideReach_m;
-  if (!beside || cfg.beside_wait_ahead_m == 0.0 || time_to_start_s <= cfg.beside_approach_s) return {slot, aim_time_s};
-  Waypoint w{slot, time_to_start_s - cfg.beside_approach_s};
-  w.slot.s_m += sign(ego_direction) * (cfg.beside_wait_ahead_m - slot.speed_mps * cfg.beside_approach_s);
-  return w;
+  if (beside && cfg.beside_wait_ahead_m != 0.0 && time_to_start_s > cfg.beside_approach_s) {
+    Waypoint w{slot, time_to_start_s - cfg.beside_approach_s};
+    w.slot.s_m += sign(ego_direction) * (cfg.beside_wait_ahead_m - slot.speed_mps * cfg.beside_approach_s);
+    return w;
+  }
+  if (aim.time_s > kSettleEarly_s && settles_early(slot, role, ego_direction, aim.ego_speed_mps, lanes)) {
+    Waypoint w{slot, aim.time_s - kSettleEarly_s};
+    w.slot.s_m -= sign(slot.direction) * slot.speed_mps * kSettleEarly_s;
+    return w;
+  }
+  return {slot, aim.time_s};
 }
 
 SpeedBand transport_band(const Slot& slot, const DirectorConfig& cfg) {

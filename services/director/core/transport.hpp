@@ -5,7 +5,8 @@
 //
 // Speed: each step the actor's way to the slot is planned again (stage.hpp, plan_speed): change
 // to a cruise speed, cruise, change to the slot's speed just in time, at the director's transport
-// rate. The actor is
+// rate (the slot of a role slower than the ego ahead of it is a waypoint on its start's track
+// kSettleEarly_s before the start: stage.hpp, way_to). The actor is
 // given the cruise speed as its desired speed, then the slot's speed once the final change is
 // due; the desired speed moves by at most kCommandRate per second, so the driver model eases into
 // it instead of jumping (the plan's rate is lower than that, for the driver's lag).
