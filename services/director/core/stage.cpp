@@ -121,20 +121,25 @@ bool settles_early(const Slot& slot, const PlayRoleConfig& role, Direction ego_d
   const double relative_mps = relative_speed_mps(slot.direction, ego_direction, slot.speed_mps, ego_speed_mps);
   return closing_speed_mps(role, relative_mps) > kSettleClosing_mps;
 }
+
+// A waypoint `time_s` from now: where `slot` is `before_s` before the start (moving at its speed),
+// `ahead_m` further along its direction.
+Waypoint on_track_before(const Slot& slot, double time_s, double before_s, double ahead_m) {
+  Waypoint w{slot, time_s};
+  w.slot.s_m += sign(slot.direction) * (ahead_m - slot.speed_mps * before_s);
+  return w;
+}
 }  // namespace
 
 Waypoint way_to(const Slot& slot, const Aim& aim, const PlayRoleConfig& role, Direction ego_direction, int ego_lane,
                 const Lanes& lanes, double time_to_start_s, const DirectorConfig& cfg) {
   const bool beside = slot.direction == ego_direction && slot.lane != ego_lane && std::abs(role.ahead_m) <= kBesideReach_m;
   if (beside && cfg.beside_wait_ahead_m != 0.0 && time_to_start_s > cfg.beside_approach_s) {
-    Waypoint w{slot, time_to_start_s - cfg.beside_approach_s};
-    w.slot.s_m += sign(ego_direction) * (cfg.beside_wait_ahead_m - slot.speed_mps * cfg.beside_approach_s);
-    return w;
+    const double approach_s = cfg.beside_approach_s;
+    return on_track_before(slot, time_to_start_s - approach_s, approach_s, cfg.beside_wait_ahead_m);
   }
   if (aim.time_s > kSettleEarly_s && settles_early(slot, role, ego_direction, aim.ego_speed_mps, lanes)) {
-    Waypoint w{slot, aim.time_s - kSettleEarly_s};
-    w.slot.s_m -= sign(slot.direction) * slot.speed_mps * kSettleEarly_s;
-    return w;
+    return on_track_before(slot, aim.time_s - kSettleEarly_s, kSettleEarly_s, 0.0);
   }
   return {slot, aim.time_s};
 }
