@@ -226,11 +226,15 @@ TEST(Casting, ANewVehicleForASlotAheadOfTheEgoInItsLaneComesFromAheadRatherThanP
   ASSERT_TRUE(ahead.has_value());
   EXPECT_EQ(ahead->region, Region::kOuterFront);
   EXPECT_NEAR(ahead->speed_mps, 1090.0 / 60.0, 1e-9);
+  EXPECT_FALSE(ahead->passes_ego);
+  EXPECT_DOUBLE_EQ(creation_cost_for(ahead, cfg), cfg.max_speed_offset_mps);
   // 40 s to go: from ahead it would need 14.75 m/s, outside the band; behind is the only place.
   const CastingSituation forty{world, ego, 40.0, 2000.0 + 25.0 * 40.0, Lanes{2, 0}, {}};
   const auto behind = hidden_placement(slot_in(40.0), 4.5, forty, w, cfg);
   ASSERT_TRUE(behind.has_value());
   EXPECT_EQ(behind->region, Region::kOuterRear);
+  EXPECT_TRUE(behind->passes_ego);
+  EXPECT_DOUBLE_EQ(creation_cost_for(behind, cfg), 2.0 * cfg.max_speed_offset_mps);
   // With the ego in the other lane the one from behind passes it beside its own lane: the smaller
   // change of speed wins again.
   const EgoObservation beside = testing::ego_at(0, 2000.0, 25.0, 1);
@@ -238,6 +242,41 @@ TEST(Casting, ANewVehicleForASlotAheadOfTheEgoInItsLaneComesFromAheadRatherThanP
   const auto from_behind = hidden_placement(slot_in(60.0), 4.5, passing, w, cfg);
   ASSERT_TRUE(from_behind.has_value());
   EXPECT_EQ(from_behind->region, Region::kOuterRear);
+  EXPECT_FALSE(from_behind->passes_ego);
+}
+
+TEST(Casting, AVehicleAheadThatMustPassSlowerOnesIsPreferredToACreationThatMustGetPastTheEgo) {
+  // A lead 40 m ahead of the ego in its lane in 40 s (3040 m at 25 m/s), the ego at 2000 m in lane
+  // 0 of two at 25 m/s. Car 1, 150 m ahead in the ego's lane, reaches the slot at 22.25 m/s on
+  // average, but three slower vehicles ahead of it (15 m/s) will be behind the slot by then: three
+  // lane changes. It costs more than a creation's flat price, less than a creation that must get
+  // past the ego, and the only hidden place, 40 s before the start, is behind the ego (from ahead it
+  // would need 14.75 m/s). Priced flat, the creation behind the ego won (lead vehicle, seed 126,
+  // stop 53: left 125 m short when the ego sped up).
+  const PlayConfig play = lead_play();
+  DirectorConfig cfg;
+  ScenarioConfig sc = testing::road_scenario(2, 0);
+  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
+  const WindowBounds w = WindowBounds::around(ego.s_m, sc.window);
+  const Lanes lanes{2, 0};
+  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), lanes)[0];
+  ASSERT_DOUBLE_EQ(slot.s_m, 3040.0);
+  const std::vector<ObservedVehicle> world{vehicle(1, 2150.0, 25.0), vehicle(2, 2300.0, 15.0),
+                                           vehicle(3, 2340.0, 15.0), vehicle(4, 2380.0, 15.0)};
+  const CastingSituation at{world, ego, 40.0, 3000.0, lanes, {}};
+  const double cost = casting_cost(slot, play.roles[0], world[0], at, cfg);
+  EXPECT_GT(cost, cfg.max_speed_offset_mps);
+  EXPECT_LT(cost, 2.0 * cfg.max_speed_offset_mps);
+  const auto place = hidden_placement(slot, 4.5, at, w, cfg);
+  ASSERT_TRUE(place.has_value());
+  EXPECT_EQ(place->region, Region::kOuterRear);
+  ASSERT_TRUE(place->passes_ego);
+  const std::vector<bool> available{true, false, false, false};
+  EXPECT_EQ(cast_roles({slot}, play.roles, available, {at}, cfg), std::vector<int>{-1});  // priced flat
+  EXPECT_EQ(cast_roles({slot}, play.roles, available, {at}, cfg, {creation_cost_for(place, cfg)}),
+            std::vector<int>{0});
+  // No place free now: the flat price, as a place is usually found a moment later.
+  EXPECT_DOUBLE_EQ(creation_cost_for(std::nullopt, cfg), cfg.max_speed_offset_mps);
 }
 
 TEST(Casting, AVehicleWhoseIdealPlaceIsBeyondTheWindowIsCreatedOnlyWithRoomLeftInTheBand) {

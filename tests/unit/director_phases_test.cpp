@@ -108,6 +108,29 @@ TEST(PlayPhases, ARoleBesideTheEgoIsCastForWhereItsWayLeadsFirst) {
   EXPECT_NE(casts_of(vehicle(8, 2062.0, 25.0, 1)).find("cutter = vehicle 8"), std::string::npos);
 }
 
+TEST(PlayPhases, ALeadIsCastFromAheadRatherThanCreatedBehindTheEgo) {
+  // The lead's start is 40 m ahead of the ego in its lane in 40 s. Car 7, 150 m ahead of the ego in
+  // its lane, must get past three slow cars (8 m/s, too slow to play it) on its way: three lane changes, a price above
+  // a creation's. The only hidden place is behind the ego (from ahead a created car would need
+  // 14.75 m/s, below the transport band), and a car created there must get past the ego into its
+  // lane as well: car 7 is cast (lead vehicle, seed 126, stop 53: created behind, the lead ended
+  // 125 m short when the ego sped up). Without the slower cars it is cast either way.
+  ScenarioConfig sc = testing::minimal_scenario();
+  sc.plays = {lead_play()};
+  auto casts_of = [&](bool slower_ahead) {
+    return casts_in_2_s(sc, [&](Step k, double ego_s, StepInput& in) {
+      const double t = 0.1 * static_cast<double>(k);
+      in.world_prev = {vehicle(7, ego_s + 150.0, 25.0)};
+      if (!slower_ahead) return;
+      for (const double ahead_m : {300.0, 340.0, 380.0}) {
+        in.world_prev.push_back(vehicle(static_cast<VehicleId>(ahead_m), 2000.0 + ahead_m + 8.0 * t, 8.0));
+      }
+    });
+  };
+  EXPECT_EQ(casts_of(true).rfind("cast: lead = vehicle 7; ", 0), 0U) << casts_of(true);
+  EXPECT_EQ(casts_of(false).rfind("cast: lead = vehicle 7; ", 0), 0U) << casts_of(false);
+}
+
 TEST(PlayPhases, ACutterLeftBehindTheEgoByItsLaneChangeIsCastAgainFromTheOtherLane) {
   // Vehicle 7 (at 28 m/s) is cast as the cutter at once. At 1 s the ego begins to change into
   // the left lane: the play is mirrored (the cutter now comes from the right lane, stage.hpp), and

@@ -128,7 +128,7 @@ std::vector<int> cast_roles(const std::vector<Slot>& slots, const std::vector<Pl
 
 std::vector<int> cast_roles(const std::vector<Slot>& slots, const std::vector<PlayRoleConfig>& role_configs,
                             const std::vector<bool>& available, const std::vector<CastingSituation>& at_role,
-                            const DirectorConfig& cfg) {
+                            const DirectorConfig& cfg, const std::vector<double>& creation_costs) {
   const std::size_t roles = slots.size();
   if (roles == 0) return {};
   const std::vector<ObservedVehicle>& world = at_role.front().world;
@@ -147,7 +147,8 @@ std::vector<int> cast_roles(const std::vector<Slot>& slots, const std::vector<Pl
     pool.push_back(i);
     for (std::size_t r = 0; r < roles; ++r) cost[r].push_back(c[r]);
   }
-  const std::vector<double> unassigned(roles, creation_cost(cfg));
+  const std::vector<double> unassigned =
+      creation_costs.empty() ? std::vector<double>(roles, creation_cost(cfg)) : creation_costs;
   const std::vector<int> chosen = assign_roles(cost, unassigned);
   std::vector<int> out(roles, -1);
   for (std::size_t r = 0; r < roles; ++r) {
@@ -203,16 +204,20 @@ std::optional<Placement> hidden_placement(const Slot& slot, double length_m, con
       if (!gap_is_free(slot, s, length_m, needed, at)) continue;
       // As for a vehicle of the traffic (casting_cost): getting past the ego into its lane costs a
       // creation more.
-      const double cost =
-          std::abs(needed - slot.speed_mps) + (passes_ego_into_its_lane(slot, b, at) ? creation_cost(cfg) : 0.0);
+      const bool passes = passes_ego_into_its_lane(slot, b, at);
+      const double cost = std::abs(needed - slot.speed_mps) + (passes ? creation_cost(cfg) : 0.0);
       if (cost < best_cost) {
         best_cost = cost;
-        best = Placement{s, needed, z.region};
+        best = Placement{s, needed, z.region, passes};
       }
       break;  // the nearest free place to the ideal one in this zone
     }
   }
   return best;
+}
+
+double creation_cost_for(const std::optional<Placement>& place, const DirectorConfig& cfg) {
+  return creation_cost(cfg) * (place && place->passes_ego ? 2.0 : 1.0);
 }
 
 }  // namespace entourage::director

@@ -54,14 +54,16 @@ double casting_cost(const Slot& slot, const PlayRoleConfig& role, const Observed
                     const DirectorConfig& cfg);
 
 // Which vehicle of `world` plays each role (roles[r] starting at slots[r]): per role the index into
-// world, or -1 (create one). `available[i]`: world[i] may be cast (not an actor already).
+// world, or -1 (create one). `available[i]`: world[i] may be cast (not an actor already). A role is
+// left to a creation where every vehicle costs more than creating one (creation_cost_for).
 std::vector<int> cast_roles(const std::vector<Slot>& slots, const std::vector<PlayRoleConfig>& roles,
                             const std::vector<bool>& available, const CastingSituation& at, const DirectorConfig& cfg);
 // The same with a situation of its own for each role (the same world and ego): the time and the
-// ego's place where the role's way leads first (way_to, stage.hpp).
+// ego's place where the role's way leads first (way_to, stage.hpp), and what a creation would cost
+// for each role (`creation_costs`; empty: a creation's flat cost for every role).
 std::vector<int> cast_roles(const std::vector<Slot>& slots, const std::vector<PlayRoleConfig>& roles,
                             const std::vector<bool>& available, const std::vector<CastingSituation>& at_role,
-                            const DirectorConfig& cfg);
+                            const DirectorConfig& cfg, const std::vector<double>& creation_costs = {});
 
 // The index in the world of the available vehicle, other than those in `taken` (world indices, -1:
 // none), that plays the role at the lowest finite cost; -1 if none can. For a role that cast_roles
@@ -76,8 +78,18 @@ struct Placement {
   double s_m = 0.0;
   double speed_mps = 0.0;
   Region region = Region::kOutside;
+  bool passes_ego = false;  // behind the ego, for a start ahead of it in its lane
 };
 std::optional<Placement> hidden_placement(const Slot& slot, double length_m, const CastingSituation& at,
                                           const WindowBounds& window, const DirectorConfig& cfg);
+
+// What leaving a role to a creation at `place` costs, in casting_cost's units: a creation's flat
+// cost, and where the place is behind the ego for a start ahead of it in the ego's lane, that cost
+// again, as for a vehicle of the traffic that must get past the ego (casting_cost). With no place
+// (none free now; one is usually found a moment later) the flat cost. Priced flat, a lead vehicle
+// created 250 m behind the ego was preferred to a car 94 m ahead of it in its lane that had five
+// slower vehicles to get past, and the ego, speeding up from 17 to 33 m/s, left it 125 m short
+// (lead vehicle, seed 126, stop 53).
+double creation_cost_for(const std::optional<Placement>& place, const DirectorConfig& cfg);
 
 }  // namespace entourage::director

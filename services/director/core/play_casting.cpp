@@ -55,8 +55,21 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
   for (std::size_t i = 0; i < in.world.size(); ++i) {
     if (is_cleared(in.world[i].id)) castable[i] = true;
   }
-  std::vector<int> chosen = cast_roles(sub_slots, sub_roles, castable, sub_at, setting_.director);
+  // Where each role would be created, found first: a creation behind the ego for a start ahead of
+  // it in its lane costs more than one ahead (creation_cost_for). A restaged role keeps its actor
+  // rather than have one created for it: it is cast again when it misses its start by far, as any
+  // actor.
   const WindowBounds window = WindowBounds::around(in.ego.s_m, setting_.window);
+  std::vector<std::optional<Placement>> places(open.size());
+  std::vector<double> creation_costs(open.size());
+  for (std::size_t k = 0; k < open.size(); ++k) {
+    const int type = std::max(play_.roles[open[k]].type_index, 0);
+    if (!restaged_only[k]) {
+      places[k] = hidden_placement(sub_slots[k], in.factory.length_m(type), sub_at[k], window, setting_.director);
+    }
+    creation_costs[k] = creation_cost_for(places[k], setting_.director);
+  }
+  std::vector<int> chosen = cast_roles(sub_slots, sub_roles, castable, sub_at, setting_.director, creation_costs);
   std::string detail;
   for (std::size_t k = 0; k < open.size(); ++k) {
     Role& role = roles_[open[k]];
@@ -67,12 +80,8 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
       command(role.actor, ActorControl{}, in.step, out);
       sent_.erase(role.actor);
     };
-    const int type = rc.type_index >= 0 ? rc.type_index : 0;
-    // A restaged role keeps its actor rather than have one created for it: it is cast again when
-    // it misses its start by far, as any actor.
-    const auto place = chosen[k] >= 0 || restaged_only[k] ? std::nullopt
-                                      : hidden_placement(sub_slots[k], in.factory.length_m(type), sub_at[k], window,
-                                                         setting_.director);
+    const int type = std::max(rc.type_index, 0);
+    const std::optional<Placement>& place = places[k];
     // Nowhere to create one on one lane per direction: the vehicle of the traffic that fits best,
     // if any, though a creation would have cost less (a truck of the traffic ahead of the ego, with
     // cars between that will pass it, leaves no place beyond it, and will not later). Where there
