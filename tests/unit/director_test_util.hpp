@@ -1,9 +1,10 @@
 #pragma once
 // Helpers shared by the director's unit tests: a vehicle as the director sees it, a play with
-// one lead role, the aim at its trigger point 2, and infinity (a time to collision never reached,
-// a role a vehicle cannot play).
+// one lead role, a role starting in a lane, the aim at its trigger point 2, and infinity (a time
+// to collision never reached, a role a vehicle cannot play).
 
 #include <limits>
+#include <vector>
 
 #include "director/core/play.hpp"
 #include "director/core/stage.hpp"
@@ -22,6 +23,10 @@ inline ObservedVehicle vehicle(VehicleId id, double s, double speed, int lane = 
   v.length_m = 4.5;
   return v;
 }
+
+// A role of the ego's (forward) direction that starts in `lane`: where and how fast matter only
+// against vehicle types (ClearingSituation::types), which the tests give where they need them.
+inline std::vector<director::Slot> role_starting_in(int lane) { return {{Direction::kForward, lane, 0.0, 0.0}}; }
 
 // A play with one role: a car 40 m ahead of the ego at its speed; trigger points at 2 and 3 km.
 inline PlayConfig lead_play() {

@@ -63,7 +63,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   std::vector<ActorPlace> actors;
   for (const Role& r : roles_) {
     const ObservedVehicle* v = r.actor == kNoVehicle ? nullptr : find(in, r.actor);
-    if (v != nullptr && v->direction == in.ego.direction) actors.push_back({v->target_lane, v->s_m, v->speed_mps});
+    if (v != nullptr && v->direction == in.ego.direction) actors.push_back({v->target_lane, v->s_m, v->speed_mps, v->length_m});
   }
   const ClearingSituation situation{to_clear, aim.time_s,     in.ego,           aim.ego_s_m,
                                     slots,    setting_.lanes, setting_.director, actors,

@@ -195,13 +195,16 @@ ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>&
 
 namespace {
 // An actor of `lane` alongside `v` now: `v` overlaps the room the actor keeps around it where it
-// is (actor_room, the actor's length taken as v's). Moving into that lane would cut in on the
-// actor, which waits to move into v's lane in turn. (A car asked out of the lead's room waited
-// 40 s beside the lead, which waited to move in beside it: lead vehicle, seed 10.)
+// is (actor_room, with the actor's own length). Moving into that lane would cut in on the actor,
+// which waits to move into v's lane in turn. (A car asked out of the lead's room waited 40 s
+// beside the lead, which waited to move in beside it: lead vehicle, seed 10. Until stop 54 the
+// room was built with v's length, 6 m longer each way for a truck: a truck the ego followed in a
+// cut-in's zone, its rear 33-38 m ahead of the cutter's centre, counted as alongside the cutter
+// and never moved over; seeds 294 and 313.)
 bool alongside_an_actor(const ObservedVehicle& v, int lane, const std::vector<ActorPlace>& actors) {
   return std::any_of(actors.begin(), actors.end(), [&](const ActorPlace& a) {
     return a.lane == lane &&
-           in_zone(actor_room(v.direction, a.lane, a.s_m, v.length_m, a.speed_mps), lane, v.s_m, v.length_m);
+           in_zone(actor_room(v.direction, a.lane, a.s_m, a.length_m, a.speed_mps), lane, v.s_m, v.length_m);
   });
 }
 
@@ -282,7 +285,15 @@ std::optional<Clearance> ahead_in_next_lane(const ObservedVehicle& v, const Clea
       if (z.direction == v.direction && z.lane == lane) front_p = std::max(front_p, dir > 0 ? z.to_s_m : -z.from_s_m);
     }
     if (slower_than_an_actor_of(v, lane, at, front_p)) continue;
-    const double target_p = front_p + 0.5 * v.length_m + kZoneMargin_m;
+    // Moved in late (moves_in_late), it is ahead of that lane's zones at its present speed already:
+    // no margin on top. (With kZoneMargin_m on top, trucks the ego followed at about their type's
+    // top speed, a few metres ahead of the cutter's room at the start, were asked for more than
+    // that top, stayed in the zone ahead of the ego and failed the cut-in: seeds 6, 27, 221 and
+    // 259, stop 54.)
+    const bool late = std::any_of(at.slots.begin(), at.slots.end(), [&](const Slot& s) {
+      return s.direction == v.direction && s.lane == lane && moves_in_late(v, s, at, front_p);
+    });
+    const double target_p = front_p + 0.5 * v.length_m + (late ? 0.0 : kZoneMargin_m);
     const double speed = clearing_speed_mps(target_p - p, t_plan, at.time_left_s, low, high);
     if (speed > high) continue;
     const double drive_mps = std::max(speed, v.speed_mps);
@@ -296,7 +307,14 @@ std::optional<Clearance> ahead_in_next_lane(const ObservedVehicle& v, const Clea
     const double change = std::max(0.0, speed - v.speed_mps);
     if (best && change >= best_change) continue;
     best_change = change;
-    best = Clearance{speed <= v.speed_mps ? kOwnDesiredSpeed_mps : std::max(speed, low), lane};
+    // Moved in late, it keeps at least its present speed, at which it is ahead of the zones: left to
+    // its own desired speed once over, a truck commanded at its type's top slowed by 1.5 m/s in
+    // front of the cutter and held it back (cut-in seeds 51 and 215, stop 54).
+    if (late) {
+      best = Clearance{std::max(speed, v.speed_mps), lane};
+    } else {
+      best = Clearance{speed <= v.speed_mps ? kOwnDesiredSpeed_mps : std::max(speed, low), lane};
+    }
   }
   return best;
 }

@@ -95,8 +95,10 @@ inline constexpr double kSlotMinGap_m = 5.0;
 inline constexpr double kSlotTimeGap_s = 1.0;
 // The ego's leader may move into a lane ahead of an actor that starts there faster than its type
 // drives this long before the start at most (ahead_in_next_lane), if the ego follows it within
-// kFollowedSpeedBand_mps and the actor will be within kActorInPlace_m of its start.
-inline constexpr double kLateMoveWindow_s = 12.0;
+// kFollowedSpeedBand_mps and the actor will be within kActorInPlace_m of its start. (12 s until
+// stop 54: once its leader has left, the ego speeds up, and the actor's start speed, relative to
+// the ego's, with it; moved over 12 s early, a truck held the cutter behind it below that speed.)
+inline constexpr double kLateMoveWindow_s = 6.0;
 inline constexpr double kFollowedSpeedBand_mps = 1.0;
 inline constexpr double kActorInPlace_m = 10.0;
 std::vector<ZoneAtStart> slot_zones(const std::vector<Slot>& slots, const std::vector<double>& lengths_m,
@@ -133,6 +135,7 @@ struct ActorPlace {
   int lane = 0;
   double s_m = 0.0;
   double speed_mps = 0.0;
+  double length_m = 4.5;  // the actor's
 };
 struct Clearance {
   double speed_mps = 0.0;  // desired speed (kOwnDesiredSpeed_mps: its own, when it only changes lane)
