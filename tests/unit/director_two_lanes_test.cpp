@@ -168,13 +168,15 @@ TEST_F(EgoInTheRightLaneOfTwo, LateATruckAtItsTopSpeedAheadOfTheCuttersRoomMoves
   ObservedVehicle truck = vehicle(1, 2000.0 + 58.5, top_mps, 0);
   truck.type_index = 1;
   truck.length_m = 16.5;
-  const auto moved = clear_out(truck, ClearingSituation{zones, t, e, ego_then_m, {slot}, lanes, cfg, actors, types});
+  const std::vector<Slot> slots{slot};
+  const ClearingSituation at{zones, t, e, ego_then_m, slots, lanes, cfg, actors, types};
+  const auto moved = clear_out(truck, at);
   ASSERT_TRUE(moved.has_value());
   EXPECT_EQ(moved->lane, 1);
   EXPECT_DOUBLE_EQ(moved->speed_mps, top_mps);
   // Its rear 1 m inside the room at the start: it stays (asked for its top speed in its lane).
   truck.s_m -= 4.0;
-  const auto stays = clear_out(truck, ClearingSituation{zones, t, e, ego_then_m, {slot}, lanes, cfg, actors, types});
+  const auto stays = clear_out(truck, at);
   ASSERT_TRUE(stays.has_value());
   EXPECT_EQ(stays->lane, 0);
 }
@@ -240,11 +242,14 @@ TEST_F(EgoInTheRightLaneOfTwo, AVehicleNeverMovesOutOfAZoneIntoALaneWhereAnActor
   // trucks the ego followed in a cut-in's zone stayed there (stop 54).
   ObservedVehicle truck = vehicle(1, 2079.0, 25.0, 0);
   truck.length_m = 16.5;
-  const auto out = clear_out(truck, ClearingSituation{zones, 20.0, ego, 2500.0, roles, lanes, cfg, {{1, 2037.0, 25.0}}});
+  const ClearingSituation lead_beside{zones, 20.0, ego, 2500.0, roles, lanes, cfg, {{1, 2037.0, 25.0}}};
+  const auto out = clear_out(truck, lead_beside);
   ASSERT_TRUE(out.has_value());
   EXPECT_EQ(out->lane, 1);
   truck.s_m = 2077.0;
-  EXPECT_EQ(clear_out(truck, ClearingSituation{zones, 20.0, ego, 2500.0, roles, lanes, cfg, {{1, 2037.0, 25.0}}})->lane, 0);
+  const auto in_room = clear_out(truck, lead_beside);
+  ASSERT_TRUE(in_room.has_value());
+  EXPECT_EQ(in_room->lane, 0);
 }
 
 TEST_F(EgoInTheRightLaneOfTwo, AVehicleInAnActorsLaneIsClearedOnlyOnItsOwnSideOfTheActor) {
