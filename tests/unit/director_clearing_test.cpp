@@ -18,6 +18,14 @@ namespace {
 using testing::lead_play;
 using testing::vehicle;
 
+// The command `out` gives vehicle `id`, if any.
+const ActorControl* command_for(const DirectorOutput& out, VehicleId id) {
+  for (const ActorCommand& c : out.commands) {
+    if (c.vehicle == id) return &c.control;
+  }
+  return nullptr;
+}
+
 // A vehicle cleared off the ego's lane that waits, indicator on, to change into the next lane
 // is let in: the vehicle just behind it there holds back (one at a time), and drives on at its own
 // speed once the other has moved over.
@@ -31,12 +39,6 @@ TEST(Clearing, AVehicleWaitingToLeaveAZoneIsLetInByTheOneJustBehindItInTheTarget
   StepInput in;
   ObservedVehicle waiting = vehicle(8, 2100.0, 25.0, 0);  // 100 m ahead of the ego: in the zone
   const ObservedVehicle behind = vehicle(9, 2092.0, 26.0, 1);  // beside it, a little behind
-  auto command_for = [](const DirectorOutput& out, VehicleId id) -> const ActorControl* {
-    for (const ActorCommand& c : out.commands) {
-      if (c.vehicle == id) return &c.control;
-    }
-    return nullptr;
-  };
   DirectorOutput out;
   std::optional<ActorControl> asked;  // commands are sent when they change
   for (Step k = 0; k < 3; ++k) {  // trigger point 1; cast; transporting and clearing
@@ -82,6 +84,42 @@ TEST(Clearing, AVehicleWaitingToLeaveAZoneIsLetInByTheOneJustBehindItInTheTarget
   ASSERT_NE(after, nullptr);
   EXPECT_EQ(after->speed_mps, kOwnDesiredSpeed_mps);
   EXPECT_EQ(after->lane, 1);
+}
+
+// An actor on its way into its start's lane that waits there, indicator on, is let in the same
+// way (cut-in, seed 37, stop 55: the cutter, ahead of the ego in the ego's lane, signalled for 60 s
+// while a column of cleared cars 4 m/s faster passed it in the lane it was to take).
+TEST(Clearing, AnActorWaitingToMoveIntoItsStartsLaneIsLetInByTheOneJustBehindItThere) {
+  DirectorCore core(testing::cutter_scenario(), 1);
+  StepInput in;
+  ObservedVehicle cutter = vehicle(7, 2062.0, 25.0, 0);  // ahead of the ego in its lane
+  const ObservedVehicle behind = vehicle(9, 2061.5, 26.0, 1);  // comes up beside it, a little behind
+  std::optional<ActorControl> asked;
+  for (Step k = 0; k < 3; ++k) {  // trigger point 1; cast; transporting
+    in.step = k;
+    in.ego = testing::ego_at(k, 2000.0 + 2.5 * static_cast<double>(k), 25.0);
+    in.world_prev = {cutter};
+    if (const ActorControl* c = command_for(core.step(in), 7)) asked = *c;
+  }
+  ASSERT_TRUE(asked.has_value());
+  EXPECT_EQ(asked->lane, 1);
+  auto asked_of_9 = [&](int indicator) -> std::optional<ActorControl> {
+    DirectorCore copy = core;
+    StepInput next = in;
+    next.step = 3;
+    next.ego = testing::ego_at(3, 2007.5, 25.0);
+    ObservedVehicle signalling = cutter;
+    signalling.indicator = indicator;
+    next.world_prev = {signalling, behind};
+    const ActorControl* c = command_for(copy.step(next), 9);
+    return c == nullptr ? std::nullopt : std::optional<ActorControl>(*c);
+  };
+  const std::optional<ActorControl> holds = asked_of_9(1);  // left
+  ASSERT_TRUE(holds.has_value());
+  EXPECT_EQ(holds->lane, 1);
+  EXPECT_NEAR(holds->speed_mps, 25.0 - kLetIn_mps, 1e-9);
+  const std::optional<ActorControl> not_signalling = asked_of_9(0);
+  EXPECT_FALSE(not_signalling.has_value() && not_signalling->speed_mps == 25.0 - kLetIn_mps);
 }
 
 // On one lane per direction a vehicle that passes the ego during the preparation is caught between

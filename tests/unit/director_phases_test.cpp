@@ -19,6 +19,7 @@ namespace entourage::director {
 namespace {
 
 using testing::kInf;
+using testing::cutter_scenario;
 using testing::lead_play;
 using testing::vehicle;
 // The casting reports of one step of the director, each as "cast: ...; ".
@@ -44,18 +45,6 @@ std::string casts_in_2_s(const ScenarioConfig& sc, const std::function<void(Step
     casts += casts_in(core.step(in));
   }
   return casts;
-}
-
-// The minimal scenario with one play: a cutter 12 m ahead of the ego in the lane to its left at
-// the start (3 km, 40 s ahead at 25 m/s).
-ScenarioConfig cutter_scenario() {
-  ScenarioConfig sc = testing::minimal_scenario();
-  PlayConfig play = lead_play();
-  play.roles[0].name = "cutter";
-  play.roles[0].lane_offset = 1;
-  play.roles[0].ahead_m = 12.0;
-  sc.plays = {play};
-  return sc;
 }
 
 TEST(PlayPhases, WaitingPreparingThenFailedWithTheReasonWhenNoActorCouldBeCast) {
@@ -149,6 +138,40 @@ TEST(PlayPhases, ACutterLeftBehindTheEgoByItsLaneChangeIsCastAgainFromTheOtherLa
   EXPECT_EQ(casts_of(-10.0, true), "cast: cutter = vehicle 7; cast: cutter = vehicle 9; ");
   EXPECT_EQ(casts_of(62.0, true), "cast: cutter = vehicle 7; ");
   EXPECT_EQ(casts_of(-10.0, false), "cast: cutter = vehicle 7; ");
+}
+
+TEST(PlayPhases, AnActorAheadOfTheEgoInItsLaneThatStartsInAnotherNeverHoldsTheEgoBack) {
+  // The cutter play, the ego 15 s before the start at 30 m/s, from 3 s on at `later_mps`. Vehicle
+  // 7, cast as the cutter 40 m ahead of the ego, is then 60 m ahead of it at its speed, beyond its
+  // start: in the lane to the ego's left, where it starts, it is asked to slow down to fall back.
+  // In the ego's lane it cannot fall back on the ego (the ego closes up behind it), and slowing
+  // while it waited to move over took the ego down with it (cut-in, seed 37, stop 55: both from
+  // 27 to 5 m/s in 70 s): there it is asked no lower than the ego's speed, nor than 80 % of the
+  // ego's usual speed when that began, whichever is lower.
+  const ScenarioConfig sc = cutter_scenario();
+  auto lowest_command = [&](int lane, double later_mps) {
+    DirectorCore core(sc, 1);
+    StepInput in;
+    double lowest_mps = kInf;
+    double ego_s = 2550.0;
+    for (Step k = 0; k < 100; ++k) {
+      in.step = k;
+      const double ego_speed = k < 30 ? 30.0 : later_mps;
+      in.ego = testing::ego_at(k, ego_s, ego_speed);
+      in.world_prev = {vehicle(7, ego_s + (k < 3 ? 40.0 : 60.0), ego_speed, lane)};
+      for (const ActorCommand& c : core.step(in).commands) {
+        if (c.vehicle == 7 && c.control.mode == ControlMode::kTransported) lowest_mps = std::min(lowest_mps, c.control.speed_mps);
+      }
+      ego_s += 0.1 * ego_speed;
+    }
+    return lowest_mps;
+  };
+  // The ego at 26 m/s: the cutter is asked down to 23 m/s in its lane, to 24 (80 % of 30) in the
+  // ego's; at 22 m/s: to 20.1 in its lane, to the ego's 22 in the ego's.
+  EXPECT_LT(lowest_command(1, 26.0), 23.5);
+  EXPECT_NEAR(lowest_command(0, 26.0), 24.0, 1e-9);
+  EXPECT_LT(lowest_command(1, 22.0), 21.0);
+  EXPECT_NEAR(lowest_command(0, 22.0), 22.0, 1e-9);
 }
 
 TEST(PlayPhases, AnActorThatMissesItsStartByFarIsReplacedOnlyWhileTheEgoKeepsItsSpeed) {

@@ -1,11 +1,12 @@
 #pragma once
 // Helpers shared by the director's unit tests: a vehicle as the director sees it, a play with
-// one lead role, a role starting in a lane, the aim at its trigger point 2, and infinity (a time
-// to collision never reached, a role a vehicle cannot play).
+// one lead role, a scenario with a cutter play, a role starting in a lane, the aim at its trigger
+// point 2, and infinity (a time to collision never reached, a role a vehicle cannot play).
 
 #include <limits>
 #include <vector>
 
+#include "core_test_util.hpp"
 #include "director/core/play.hpp"
 #include "director/core/stage.hpp"
 
@@ -41,6 +42,18 @@ inline PlayConfig lead_play() {
   lead.speed_mps = 0.0;  // the ego's speed
   p.roles = {lead};
   return p;
+}
+
+// The minimal scenario with one play: a cutter 12 m ahead of the ego in the lane to its left at
+// the start (3 km, 40 s ahead at 25 m/s).
+inline ScenarioConfig cutter_scenario() {
+  ScenarioConfig sc = minimal_scenario();
+  PlayConfig play = lead_play();
+  play.roles[0].name = "cutter";
+  play.roles[0].lane_offset = 1;
+  play.roles[0].ahead_m = 12.0;
+  sc.plays = {play};
+  return sc;
 }
 
 // Aimed at the start: the ego at trigger point 2 at `speed_mps`, a minute from now.

@@ -223,6 +223,22 @@ bool PlayRun::ego_slowed_down(const PlayInput& in) const {
          unpassable_leader(in.ego, in.world, setting_.lanes) == nullptr;
 }
 
+bool PlayRun::leaves_ego_lane_ahead(const PlayInput& in, const ObservedVehicle& actor, int start_lane) const {
+  const int ego_lane = staged_lane(in);
+  return actor.direction == in.ego.direction && start_lane != ego_lane && actor.lane == ego_lane &&
+         sign(in.ego.direction) * (actor.s_m - in.ego.s_m) > 0.0;
+}
+
+double PlayRun::leaving_ego_lane_floor_mps(const PlayInput& in, const ObservedVehicle& actor, const Slot& slot,
+                                           Role& role) const {
+  if (!leaves_ego_lane_ahead(in, actor, slot.lane)) {
+    role.leaving_floor_mps = -1.0;
+  } else if (role.leaving_floor_mps < 0.0) {
+    role.leaving_floor_mps = kSlowedShare * ego_usual_speed_.top();
+  }
+  return role.leaving_floor_mps < 0.0 ? -1.0 : std::min(role.leaving_floor_mps, in.ego.speed_mps);
+}
+
 std::optional<LeaderAhead> PlayRun::ego_leader(const PlayInput& in) const {
   const ObservedVehicle* v = unpassable_leader(in.ego, in.world, setting_.lanes);
   if (v == nullptr) return std::nullopt;
@@ -326,6 +342,11 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, c
         t.speed_mps = pace_mps;
         t.drive_mps = drive_speed_mps(pace_mps, v->speed_mps, rate, type_accel);
       }
+    }
+    const double leaving_mps = leaving_ego_lane_floor_mps(in, *v, slots[r], role);
+    if (leaving_mps > t.speed_mps) {
+      t.speed_mps = leaving_mps;
+      t.drive_mps = drive_speed_mps(leaving_mps, v->speed_mps, rate, type_accel);
     }
     // Never a wish above the highest of its type's drivers (as for the cleared vehicles,
     // play_clearing.cpp), unless the play asks its start speed above that: the desired speed given

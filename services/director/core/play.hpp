@@ -118,6 +118,7 @@ class PlayRun {
     double position_error_m = 0.0;
     double speed_error_mps = 0.0;
     double hopeless_since_s = -1.0;  // since when its plan misses the start by far (< 0: it does not)
+    double leaving_floor_mps = -1.0;  // leaving_ego_lane_floor_mps: its usual-speed part, fixed (< 0: none)
   };
 
   void prepare(const PlayInput& in, PlayOutput& out);
@@ -139,6 +140,18 @@ class PlayRun {
   // it cannot pass, the estimate drives it behind that leader (start_time.hpp): counted there as
   // well, the slowdown cost the slow truck play, whose ego slows behind the truck, 3 of 100 runs.
   bool ego_slowed_down(const PlayInput& in) const;
+  // An actor ahead of the ego in the ego's lane whose start is in another lane (the ego's lane
+  // change moved it in behind the actor) is asked no slower than the ego drives, nor than
+  // kSlowedShare of the ego's usual speed when that began (whichever is lower), until it has left
+  // that lane: it cannot fall back on the ego there, and slowing to do so while it waited for a
+  // gap took the ego down with it (cut-in, stop 55: seed 37, both from 27 to 5 m/s in 70 s; seeds
+  // 378 and 395 the same way). With the usual speed of the moment, the floor sank with the ego it
+  // held at it (seed 37: 22 to 18 m/s in 30 s); with the usual speed alone, above an ego that had
+  // slowed down, the cutter pulled away from it to 79 m ahead (seed 112). Below 0: no floor;
+  // `role.leaving_floor_mps` is kept or reset. Such an actor is let in (let_in, play_clearing.cpp).
+  double leaving_ego_lane_floor_mps(const PlayInput& in, const ObservedVehicle& actor, const Slot& slot, Role& role) const;
+  // `actor` is ahead of the ego in the ego's lane and starts in another, `start_lane`.
+  bool leaves_ego_lane_ahead(const PlayInput& in, const ObservedVehicle& actor, int start_lane) const;
   // Casts the roles without an actor, and the restaged ones whose actor would have to get past the
   // ego (`restaged`: restaged_roles); returns what it did ("" for nothing).
   std::string cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
