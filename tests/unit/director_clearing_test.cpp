@@ -99,7 +99,8 @@ TEST(Clearing, AnActorWaitingToMoveIntoItsStartsLaneIsLetInByTheOneJustBehindItT
     in.step = k;
     in.ego = testing::ego_at(k, 2000.0 + 2.5 * static_cast<double>(k), 25.0);
     in.world_prev = {cutter};
-    if (const ActorControl* c = command_for(core.step(in), 7)) asked = *c;
+    const DirectorOutput out = core.step(in);
+    if (const ActorControl* c = command_for(out, 7)) asked = *c;
   }
   ASSERT_TRUE(asked.has_value());
   EXPECT_EQ(asked->lane, 1);
@@ -111,7 +112,8 @@ TEST(Clearing, AnActorWaitingToMoveIntoItsStartsLaneIsLetInByTheOneJustBehindItT
     ObservedVehicle signalling = cutter;
     signalling.indicator = indicator;
     next.world_prev = {signalling, behind};
-    const ActorControl* c = command_for(copy.step(next), 9);
+    const DirectorOutput out = copy.step(next);
+    const ActorControl* c = command_for(out, 9);
     return c == nullptr ? std::nullopt : std::optional<ActorControl>(*c);
   };
   const std::optional<ActorControl> holds = asked_of_9(1);  // left
