@@ -333,20 +333,18 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, c
     const PlayRoleConfig& rc = staged_.roles[r];
     const bool in_ego_lane = rc.direction == in.ego.direction && slots[r].lane == staged_lane(in) &&
                              v->lane == slots[r].lane && v->target_lane == v->lane;
+    // The floors under its speed in the ego's lane (below 0: none): where it starts there, and
+    // where it must leave it (the latter called at every step: it keeps its fixed part).
+    double floor_mps = leaving_ego_lane_floor_mps(in, *v, slots[r], role);
     if (in_ego_lane) {
       const double ahead = sign(in.ego.direction) * (v->s_m - in.ego.s_m);
-      const double pace_mps = rc.absolute_speed
-                                  ? start_speed_floor_mps(ahead, rc.ahead_m, rc.position_tolerance_m, rc.speed_mps)
-                                  : ego_pace_floor_mps(ahead, rc.ahead_m, in.ego.speed_mps, rc.speed_mps);
-      if (pace_mps > t.speed_mps) {
-        t.speed_mps = pace_mps;
-        t.drive_mps = drive_speed_mps(pace_mps, v->speed_mps, rate, type_accel);
-      }
+      floor_mps = std::max(floor_mps, rc.absolute_speed
+                                          ? start_speed_floor_mps(ahead, rc.ahead_m, rc.position_tolerance_m, rc.speed_mps)
+                                          : ego_pace_floor_mps(ahead, rc.ahead_m, in.ego.speed_mps, rc.speed_mps));
     }
-    const double leaving_mps = leaving_ego_lane_floor_mps(in, *v, slots[r], role);
-    if (leaving_mps > t.speed_mps) {
-      t.speed_mps = leaving_mps;
-      t.drive_mps = drive_speed_mps(leaving_mps, v->speed_mps, rate, type_accel);
+    if (floor_mps > t.speed_mps) {
+      t.speed_mps = floor_mps;
+      t.drive_mps = drive_speed_mps(floor_mps, v->speed_mps, rate, type_accel);
     }
     // Never a wish above the highest of its type's drivers (as for the cleared vehicles,
     // play_clearing.cpp), unless the play asks its start speed above that: the desired speed given

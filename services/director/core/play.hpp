@@ -162,7 +162,8 @@ class PlayRun {
                    PlayOutput& out);
   // Vehicles waiting to change into a lane they were asked for are let in (transport.hpp,
   // follower_to_let_in); a vehicle that let one in drives on at its own speed in its lane.
-  void let_in(const PlayInput& in, PlayOutput& out);
+  // `slots`: the roles' starts (an actor leaving the ego's lane for its start's is let in too).
+  void let_in(const PlayInput& in, const std::vector<Slot>& slots, PlayOutput& out);
   // On one lane per direction, with a clear zone ahead of the ego in its lane: the vehicles behind
   // the ego in its lane, within the inner region, keep their lane (pass nobody) until the
   // handover. Nothing gets out from between the ego and an actor ahead of it there (casting.hpp,

@@ -105,7 +105,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
       }
     }
   }
-  let_in(in, out);
+  let_in(in, slots, out);
   hold_followers(in, out);
   if (time_to_start_s > kHoldLanesBefore_s) return;
   // Shortly before the start, vehicles beside a zone keep their lane (at their own speed), so that
@@ -262,7 +262,7 @@ void PlayRun::hold_followers(const PlayInput& in, PlayOutput& out) {
   }
 }
 
-void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
+void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, PlayOutput& out) {
   // The lane `id` was asked to change into while it has not started moving there; -1 otherwise.
   auto waiting_for_lane = [&](VehicleId id) {
     const auto cmd = sent_.find(id);
@@ -299,9 +299,8 @@ void PlayRun::let_in(const PlayInput& in, PlayOutput& out) {
   std::vector<VehicleId> waiting_ones = cleared_;
   for (std::size_t r = 0; r < roles_.size(); ++r) {
     const ObservedVehicle* a = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
-    const PlayRoleConfig& rc = staged_.roles[r];
-    if (a == nullptr || rc.direction != Direction::kForward) continue;
-    const int start_lane = staged_lane(in) + rc.lane_offset;
+    if (a == nullptr || slots[r].direction != in.ego.direction) continue;
+    const int start_lane = slots[r].lane;
     if (waiting_for_lane(a->id) == start_lane && leaves_ego_lane_ahead(in, *a, start_lane)) waiting_ones.push_back(a->id);
   }
   for (VehicleId id : waiting_ones) {
