@@ -102,7 +102,7 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
   std::vector<double> held_up;  // s, per run
   std::vector<double> pos, speed, est, a_beside, o_beside, slowed, waits, beyond;
   ExtremesOverRuns actors, cleared, autonomous;
-  int taken_off = 0, taken_off_in_view = 0;
+  int taken_off = 0, taken_off_in_view = 0, taken_off_for_room = 0;
   int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
   bench::SignalsCalledOff off_commanded, off_autonomous;
   bench::AboveTopSpeed above_commanded, above_autonomous;
@@ -157,6 +157,7 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
     in_view += r.created_in_view;
     taken_off += r.taken_off;
     taken_off_in_view += r.taken_off_in_view;
+    taken_off_for_room += r.taken_off_for_room;
     overlaps_actor += r.overlaps_with_actor;
     overlaps_other += r.overlaps_other;
     ego_contacts += r.ego_contacts_with_actor;
@@ -225,8 +226,9 @@ void print_play(const std::string& name, const std::vector<bench::PlayRunResult>
               percentile(off_autonomous.signal_s, 0.5), percentile(off_autonomous.signal_s, 0.95),
               percentile(off_autonomous.signal_s, 1.0), off_autonomous.signal_s.size());
   std::printf("vehicles created               %d   of which inside the view: %d\n", created, in_view);
-  std::printf("vehicles taken off the road    %d   of which inside the view: %d   (oncoming, for a gap)\n", taken_off,
-              taken_off_in_view);
+  std::printf("vehicles taken off the road    %d   of which inside the view: %d   (oncoming, for a gap; of the ego's "
+              "direction, to make room for a creation: %d)\n",
+              taken_off, taken_off_in_view, taken_off_for_room);
   std::printf("overlapping pairs              with an actor %d   autonomous only %d   ego touching an actor %d\n",
               overlaps_actor, overlaps_other, ego_contacts);
 }

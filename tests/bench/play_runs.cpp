@@ -230,6 +230,7 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
       for (const Handoff& h : o->handoffs) {
         if (h.to_role != Role::kNone || h.reason != HandoffReason::kDirector) continue;
         ++r.taken_off;
+        if (h.vehicle.direction == in.ego.direction) ++r.taken_off_for_room;
         if (w.in_inner(h.vehicle.s_m)) ++r.taken_off_in_view;
       }
     }

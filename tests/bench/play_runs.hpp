@@ -160,6 +160,7 @@ struct PlayRunResult {
   int created = 0;
   int created_in_view = 0;           // born inside the inner region: must be 0
   int taken_off = 0;                 // withdrawn by the director (a gap in the oncoming traffic)
+  int taken_off_for_room = 0;        // of them of the ego's direction (room for a creation)
   int taken_off_in_view = 0;         // of them inside the inner region: must be 0
   int overlaps_with_actor = 0;       // vehicle pairs overlapping where one is an actor
   int overlaps_other = 0;            // any other overlapping pair (autonomous traffic)

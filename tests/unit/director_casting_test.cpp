@@ -201,6 +201,46 @@ TEST(Casting, NewVehiclesAreCreatedOutOfSightWithASafeGap) {
   EXPECT_GT(std::abs(moved->s_m - world[0].s_m), 4.5 + 5.0 + 1.5 * 25.0 - 1e-9);
 }
 
+TEST(Casting, OnOneLaneAVehicleOutOfSightIsTakenOffWhereItAloneKeepsAPlaceFromBeingFree) {
+  const PlayConfig play = lead_play();
+  DirectorConfig cfg;
+  ScenarioConfig sc = testing::road_scenario(1, 1, RoadKind::kRural);
+  const EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
+  const WindowBounds w = WindowBounds::around(ego.s_m, sc.window);
+  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), Lanes{1, 1})[0];
+  const double truck_m = 16.5;
+  // A column of cars at 25 m/s, 60 m apart, through the whole outer region ahead: 49.5 m between
+  // bumpers, where a truck needs 5 m and 1.5 s at the follower's speed on either side.
+  std::vector<ObservedVehicle> world;
+  VehicleId id = 10;
+  for (double s = w.inner_front_m + 10.0; s < w.front_edge_m; s += 60.0) world.push_back(vehicle(id++, s, 25.0));
+  const CastingSituation at{world, ego, 30.0, 3000.0, Lanes{1, 1}, {}};
+  ASSERT_FALSE(hidden_placement(slot, truck_m, at, w, cfg).has_value());
+  std::vector<bool> available(world.size(), true);
+  const int i = blocker_to_take_off(slot, truck_m, available, at, w, cfg);
+  ASSERT_GE(i, 0);
+  const ObservedVehicle taken = world[static_cast<std::size_t>(i)];
+  EXPECT_GT(taken.s_m, w.inner_front_m + cfg.hidden_margin_m);  // out of the driver's sight
+  // Once it is gone, the truck is created where it was.
+  std::vector<ObservedVehicle> after = world;
+  after.erase(after.begin() + i);
+  const CastingSituation gone{after, ego, 30.0, 3000.0, Lanes{1, 1}, {}};
+  const auto place = hidden_placement(slot, truck_m, gone, w, cfg);
+  ASSERT_TRUE(place.has_value());
+  EXPECT_LT(std::abs(place->s_m - taken.s_m), 60.0 - 1e-9);
+  // Vehicles that are not the director's to take (actors, cleared ones) are left alone.
+  available[static_cast<std::size_t>(i)] = false;
+  EXPECT_NE(blocker_to_take_off(slot, truck_m, available, at, w, cfg), i);
+  EXPECT_EQ(blocker_to_take_off(slot, truck_m, std::vector<bool>(world.size(), false), at, w, cfg), -1);
+  // So is a vehicle in view, though it alone keeps the nearest place out of sight from being free.
+  const double sight_m = w.inner_front_m + cfg.hidden_margin_m;
+  for (const double offset_m : {-10.0, 10.0}) {
+    const std::vector<ObservedVehicle> one = {vehicle(99, sight_m + offset_m, 25.0)};
+    const CastingSituation edge{one, ego, 30.0, 3000.0, Lanes{1, 1}, {}};
+    EXPECT_EQ(blocker_to_take_off(slot, truck_m, {true}, edge, w, cfg), offset_m > 0.0 ? 0 : -1) << offset_m;
+  }
+}
+
 TEST(Casting, ANewVehicleForASlotAheadOfTheEgoInItsLaneComesFromAheadRatherThanPastTheEgo) {
   // A lead 40 m ahead of the ego in its lane at the start, the ego at 25 m/s in lane 0 of two, at
   // 2000 m: the inner region ends 400 m ahead and 200 m behind, so a hidden place is at least

@@ -174,6 +174,49 @@ TEST(PlayPhases, AnActorAheadOfTheEgoInItsLaneThatStartsInAnotherNeverHoldsTheEg
   EXPECT_NEAR(lowest_command(0, 22.0), 22.0, 1e-9);
 }
 
+TEST(PlayPhases, OnOneLaneAVehicleOutOfSightIsTakenOffToMakeRoomForATruckNothingElseCouldPlay) {
+  // The shipped slow truck, the ego at trigger point 1 at 23.6 m/s, alone in its lane but for a
+  // column of cars at its speed, 60 m apart, through the outer region ahead (beyond the driver's
+  // sight): no truck to cast, and no room to create one with 5 m and 1.5 s on either side. After
+  // 10 s the director takes one of the cars off the road and, once it is gone, creates the truck.
+  const ScenarioConfig sc = testing::shipped_scenario("rural_slow_truck");
+  const PlayConfig& play = sc.plays.front();
+  const double speed_mps = 23.6;
+  const double sight_m = sc.window.inner_ahead_m + sc.director.hidden_margin_m;
+  DirectorCore core(sc, 1);
+  StepInput in;
+  std::vector<VehicleId> column;
+  auto ahead_m = [&](VehicleId id) { return sight_m - 50.0 + 60.0 * static_cast<double>(id); };
+  for (VehicleId id = 1; ahead_m(id) < sc.window.inner_ahead_m + sc.window.outer_ahead_m; ++id) column.push_back(id);
+  VehicleId taken = kNoVehicle;
+  double taken_at_s = -1.0;
+  double created_at_s = -1.0;
+  for (Step k = 0; k < 160 && created_at_s < 0.0; ++k) {
+    in.step = k;
+    const double t_s = 0.1 * static_cast<double>(k);
+    const double ego_s = play.trigger1_s_m + speed_mps * t_s;
+    in.ego = testing::ego_at(k, ego_s, speed_mps);
+    in.world_prev.clear();
+    for (const VehicleId id : column) {
+      if (id != taken || t_s < taken_at_s + 0.2) in.world_prev.push_back(vehicle(id, ego_s + ahead_m(id), speed_mps));
+    }
+    const DirectorOutput out = core.step(in);
+    for (const ActorCommand& c : out.commands) {
+      if (c.control.mode != ControlMode::kWithdrawn || c.vehicle > column.back()) continue;
+      EXPECT_EQ(taken, kNoVehicle) << "one at a time";
+      taken = c.vehicle;
+      taken_at_s = t_s;
+    }
+    for (const Handoff& h : out.births) {
+      if (h.vehicle.direction == Direction::kForward) created_at_s = t_s;
+    }
+  }
+  ASSERT_NE(taken, kNoVehicle);
+  EXPECT_GE(taken_at_s, 10.0);
+  EXPECT_LT(taken_at_s, 11.0);
+  EXPECT_GT(created_at_s, taken_at_s);
+}
+
 TEST(PlayPhases, AnActorThatMissesItsStartByFarIsReplacedOnlyWhileTheEgoKeepsItsSpeed) {
   // The lead play from 2 km on; vehicle 7, 40 m ahead of the ego at its speed, is cast at once.
   // From 1 s on it is seen 600 m ahead (it would have to fall back 560 m, beyond the transport

@@ -51,24 +51,76 @@ bool passes_ego_into_its_lane(const Slot& slot, const Between& b, const CastingS
   return b.ego && occupies(at.ego, slot.direction, slot.lane);
 }
 
-bool gap_is_free(const Slot& slot, double s_m, double length_m, double speed_mps, const CastingSituation& at) {
+// The vehicles of the slot's lane (world indices; -1 for the ego) too near a vehicle of length
+// `length_m` created at `s_m` at `speed_mps`: closer than a standstill distance and a time gap at
+// the follower's speed.
+std::vector<int> place_blockers(const Slot& slot, double s_m, double length_m, double speed_mps,
+                                const CastingSituation& at) {
   const int dir = sign(slot.direction);
   const double p = dir * s_m;
   auto clear = [&](double centre_p, double other_length_m, double follower_speed_mps) {
     const double bumper = std::abs(centre_p - p) - 0.5 * (other_length_m + length_m);
     return bumper >= kPlacementStandstill_m + kPlacementTimeGap_s * follower_speed_mps;
   };
-  for (const ObservedVehicle& v : at.world) {
+  std::vector<int> blockers;
+  for (std::size_t i = 0; i < at.world.size(); ++i) {
+    const ObservedVehicle& v = at.world[i];
     if (!occupies(v, slot.direction, slot.lane)) continue;
     const double q = dir * v.s_m;
-    if (!clear(q, v.length_m, q < p ? v.speed_mps : speed_mps)) return false;
+    if (!clear(q, v.length_m, q < p ? v.speed_mps : speed_mps)) blockers.push_back(static_cast<int>(i));
   }
   const EgoObservation& e = at.ego;
   if (occupies(e, slot.direction, slot.lane)) {
     const double q = dir * e.s_m;
-    if (!clear(q, e.length_m, q < p ? e.speed_mps : speed_mps)) return false;
+    if (!clear(q, e.length_m, q < p ? e.speed_mps : speed_mps)) blockers.push_back(-1);
   }
-  return true;
+  return blockers;
+}
+
+// A place out of sight that hidden_placement tries: where, the speed that takes a vehicle from
+// there to the slot in time, and the outer region.
+struct PlaceTry {
+  double s_m = 0.0;
+  double needed_mps = 0.0;
+  Region region = Region::kOutside;
+  bool passes_ego = false;
+};
+
+// The places out of sight a vehicle for `slot` could be created at, nearest the ideal one first in
+// each outer region (the ideal one: where the slot is now, at its speed), each from where it
+// reaches the slot at a speed inside the transport band, and on one lane per direction without
+// getting past the ego or anyone else (their neighbours not checked). `take(place)` returns true
+// to end that region's search.
+template <class Take>
+void search_places(const Slot& slot, const CastingSituation& at, const WindowBounds& window,
+                   const DirectorConfig& cfg, Take take) {
+  const double t = at.time_to_start_s;
+  if (t <= 0.0) return;
+  const double ideal = slot.s_m - sign(slot.direction) * slot.speed_mps * t;
+  const double inner_front = window.inner_front_m + cfg.hidden_margin_m;
+  const double inner_rear = window.inner_rear_m - cfg.hidden_margin_m;
+  const struct { double lo, hi; Region region; } zones[] = {
+      {inner_front, window.front_edge_m - kEdgeMargin_m, Region::kOuterFront},
+      {window.rear_edge_m + kEdgeMargin_m, inner_rear, Region::kOuterRear},
+  };
+  const SpeedBand band = transport_band(slot, cfg);
+  const bool one_lane = at.lanes.of(slot.direction) <= 1;
+  for (const auto& z : zones) {
+    if (z.hi <= z.lo) continue;
+    const double start = std::clamp(ideal, z.lo, z.hi);
+    const bool beyond = z.region == Region::kOuterFront ? ideal > z.hi : ideal < z.lo;
+    for (int k = 0; k < kPlacementTries; ++k) {
+      const double offset = kPlacementStep_m * ((k + 1) / 2) * (k % 2 == 0 ? 1.0 : -1.0);
+      const double s = start + offset;
+      if (s < z.lo || s > z.hi) continue;
+      const double needed = needed_speed_mps(slot, s, t);
+      if (!band.contains(needed)) continue;
+      if (beyond && std::abs(needed - slot.speed_mps) > kEarlyCreationSpeedShare * cfg.max_speed_offset_mps) continue;
+      const Between b = between(slot, kNoVehicle, s, t, at.world, at.ego, at.ego_s_at_handover_m);
+      if (one_lane && (b.ego || b.to_pass > 0 || stuck_between(slot, s, kNoVehicle, at))) continue;
+      if (take(PlaceTry{s, needed, z.region, passes_ego_into_its_lane(slot, b, at)})) break;
+    }
+  }
 }
 }  // namespace
 
@@ -175,44 +227,42 @@ int cheapest_fit(const Slot& slot, const PlayRoleConfig& role, const std::vector
 
 std::optional<Placement> hidden_placement(const Slot& slot, double length_m, const CastingSituation& at,
                                           const WindowBounds& window, const DirectorConfig& cfg) {
-  const double t = at.time_to_start_s;
-  if (t <= 0.0) return std::nullopt;
-  const double ideal = slot.s_m - sign(slot.direction) * slot.speed_mps * t;
-  const double inner_front = window.inner_front_m + cfg.hidden_margin_m;
-  const double inner_rear = window.inner_rear_m - cfg.hidden_margin_m;
-  const struct { double lo, hi; Region region; } zones[] = {
-      {inner_front, window.front_edge_m - kEdgeMargin_m, Region::kOuterFront},
-      {window.rear_edge_m + kEdgeMargin_m, inner_rear, Region::kOuterRear},
-  };
-  const SpeedBand band = transport_band(slot, cfg);
-  const bool one_lane = at.lanes.of(slot.direction) <= 1;
   std::optional<Placement> best;
   double best_cost = kInf;
-  for (const auto& z : zones) {
-    if (z.hi <= z.lo) continue;
-    const double start = std::clamp(ideal, z.lo, z.hi);
-    const bool beyond = z.region == Region::kOuterFront ? ideal > z.hi : ideal < z.lo;
-    for (int k = 0; k < kPlacementTries; ++k) {
-      const double offset = kPlacementStep_m * ((k + 1) / 2) * (k % 2 == 0 ? 1.0 : -1.0);
-      const double s = start + offset;
-      if (s < z.lo || s > z.hi) continue;
-      const double needed = needed_speed_mps(slot, s, t);
-      if (!band.contains(needed)) continue;
-      if (beyond && std::abs(needed - slot.speed_mps) > kEarlyCreationSpeedShare * cfg.max_speed_offset_mps) continue;
-      const Between b = between(slot, kNoVehicle, s, t, at.world, at.ego, at.ego_s_at_handover_m);
-      if (one_lane && (b.ego || b.to_pass > 0 || stuck_between(slot, s, kNoVehicle, at))) continue;
-      if (!gap_is_free(slot, s, length_m, needed, at)) continue;
-      // As for a vehicle of the traffic (casting_cost): getting past the ego into its lane costs a
-      // creation more.
-      const bool passes = passes_ego_into_its_lane(slot, b, at);
-      const double cost = std::abs(needed - slot.speed_mps) + (passes ? creation_cost(cfg) : 0.0);
-      if (cost < best_cost) {
-        best_cost = cost;
-        best = Placement{s, needed, z.region, passes};
-      }
-      break;  // the nearest free place to the ideal one in this zone
+  search_places(slot, at, window, cfg, [&](const PlaceTry& place) {
+    if (!place_blockers(slot, place.s_m, length_m, place.needed_mps, at).empty()) return false;
+    // As for a vehicle of the traffic (casting_cost): getting past the ego into its lane costs a
+    // creation more.
+    const double cost = std::abs(place.needed_mps - slot.speed_mps) + (place.passes_ego ? creation_cost(cfg) : 0.0);
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = Placement{place.s_m, place.needed_mps, place.region, place.passes_ego};
     }
-  }
+    return true;  // the nearest free place to the ideal one in this region
+  });
+  return best;
+}
+
+int blocker_to_take_off(const Slot& slot, double length_m, const std::vector<bool>& available,
+                        const CastingSituation& at, const WindowBounds& window, const DirectorConfig& cfg) {
+  const double sight_front = window.inner_front_m + cfg.hidden_margin_m;
+  const double sight_rear = window.inner_rear_m - cfg.hidden_margin_m;
+  auto out_of_sight = [&](double s_m) { return s_m > sight_front || s_m < sight_rear; };
+  int best = -1;
+  double best_cost = kInf;
+  search_places(slot, at, window, cfg, [&](const PlaceTry& place) {
+    if (place.passes_ego) return false;
+    const std::vector<int> blockers = place_blockers(slot, place.s_m, length_m, place.needed_mps, at);
+    if (blockers.size() != 1 || blockers.front() < 0) return false;
+    const auto i = static_cast<std::size_t>(blockers.front());
+    if (!available[i] || !out_of_sight(at.world[i].s_m)) return false;
+    const double cost = std::abs(place.needed_mps - slot.speed_mps);
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = blockers.front();
+    }
+    return true;
+  });
   return best;
 }
 

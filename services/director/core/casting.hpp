@@ -83,6 +83,16 @@ struct Placement {
 std::optional<Placement> hidden_placement(const Slot& slot, double length_m, const CastingSituation& at,
                                           const WindowBounds& window, const DirectorConfig& cfg);
 
+// Where hidden_placement finds no free place on one lane per direction and no vehicle of the
+// traffic can play the role (cheapest_fit), the vehicle to take off the road to make one: of the
+// places hidden_placement tries, one that a single vehicle keeps from being free, that vehicle
+// available and out of sight itself (where the window's edges take vehicles off as well); the
+// world index of the vehicle for the place nearest the slot's speed, -1 if none. (A column of cars
+// at 23 m/s in the outer region ahead, 50-70 m apart, left no room for a truck and 1.5 s on either
+// side: the slow truck had no truck at all, seed 22, stop 56.)
+int blocker_to_take_off(const Slot& slot, double length_m, const std::vector<bool>& available,
+                        const CastingSituation& at, const WindowBounds& window, const DirectorConfig& cfg);
+
 // What leaving a role to a creation at `place` costs, in casting_cost's units: a creation's flat
 // cost, and where the place is behind the ego for a start ahead of it in the ego's lane, that cost
 // again, as for a vehicle of the traffic that must get past the ego (casting_cost). With no place

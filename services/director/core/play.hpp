@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "director/core/casting.hpp"
 #include "director/core/recent_top.hpp"
 #include "director/core/script.hpp"
 #include "director/core/stage.hpp"
@@ -119,6 +120,7 @@ class PlayRun {
     double speed_error_mps = 0.0;
     double hopeless_since_s = -1.0;  // since when its plan misses the start by far (< 0: it does not)
     double leaving_floor_mps = -1.0;  // leaving_ego_lane_floor_mps: its usual-speed part, fixed (< 0: none)
+    double unplaced_since_s = -1.0;  // since when it has had no actor and no place to create one (< 0: not)
   };
 
   void prepare(const PlayInput& in, PlayOutput& out);
@@ -156,6 +158,11 @@ class PlayRun {
   // ego (`restaged`: restaged_roles); returns what it did ("" for nothing).
   std::string cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
                    const std::vector<bool>& restaged, PlayOutput& out);
+  // For a role that has had no actor and no place to create one for kRoomWait_s: takes off the
+  // road the vehicle out of sight that keeps a place for `slot` from being free
+  // (blocker_to_take_off), one at a time; returns what it did ("" for nothing).
+  std::string make_room(const PlayInput& in, Role& role, const Slot& slot, double length_m,
+                        const CastingSituation& at, const WindowBounds& window, PlayOutput& out);
   void move_actors(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
                    PlayOutput& out);
   void clear_zones(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
@@ -262,6 +269,9 @@ class PlayRun {
     double time_s = 0.0;
   };
   std::vector<Filler> fillers_;
+  // The vehicle taken off out of sight to make room for a creation (blocker_to_take_off), until it
+  // is gone from the world: one at a time.
+  VehicleId making_room_ = kNoVehicle;
   std::vector<ActorControl> scripted_;      // per role, once handed over
   std::optional<Script> script_;
   double estimated_start_s_ = -1.0;

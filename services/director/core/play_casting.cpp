@@ -12,6 +12,12 @@
 
 namespace entourage::director {
 
+namespace {
+// How long a role without an actor waits for a place to come free before a vehicle out of sight is
+// taken off the road to make one (make_room).
+constexpr double kRoomWait_s = 10.0;
+}  // namespace
+
 std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
                           const std::vector<bool>& restaged, PlayOutput& out) {
   const CastingSituation at{in.world,       in.ego,
@@ -89,6 +95,12 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
     // instead held the ego up: seed 31, stop 43).
     if (chosen[k] < 0 && !place && setting_.lanes.of(sub_slots[k].direction) <= 1) {
       chosen[k] = cheapest_fit(sub_slots[k], sub_roles[k], castable, sub_at[k], chosen, setting_.director);
+      // Not even that: a vehicle out of sight is taken off the road where a single one keeps a
+      // place from being free, and the role is created there once it is gone.
+      const std::string made = chosen[k] < 0 && !restaged_only[k]
+                                   ? make_room(in, role, sub_slots[k], in.factory.length_m(type), sub_at[k], window, out)
+                                   : std::string();
+      if (!made.empty()) detail += (detail.empty() ? "" : ", ") + rc.name + ": " + made;
     }
     if (chosen[k] >= 0) {
       replace();
@@ -112,6 +124,25 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
     out.created.push_back({std::move(v), place->region});
   }
   return detail;
+}
+
+std::string PlayRun::make_room(const PlayInput& in, Role& role, const Slot& slot, double length_m,
+                               const CastingSituation& at, const WindowBounds& window, PlayOutput& out) {
+  // Only for a role without an actor (one that misses by far keeps it until a better one is found),
+  // once no place has come free for a while: one usually does as the traffic moves on (seed 32,
+  // stop 56: 6 s after trigger point 1).
+  if (role.actor != kNoVehicle) return {};
+  if (role.unplaced_since_s < 0.0) role.unplaced_since_s = in.ego.time_s;
+  if (in.ego.time_s - role.unplaced_since_s < kRoomWait_s) return {};
+  if (making_room_ != kNoVehicle && find(in, making_room_) != nullptr) return {};
+  making_room_ = kNoVehicle;
+  const int i = blocker_to_take_off(slot, length_m, in.available, at, window, setting_.director);
+  if (i < 0) return {};
+  const auto index = static_cast<std::size_t>(i);
+  making_room_ = in.world[index].id;
+  in.available[index] = false;
+  command(making_room_, withdrawn(), in.step, out);
+  return "vehicle " + std::to_string(making_room_) + " taken off out of sight to make room";
 }
 
 }  // namespace entourage::director
