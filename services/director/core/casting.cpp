@@ -51,30 +51,46 @@ bool passes_ego_into_its_lane(const Slot& slot, const Between& b, const CastingS
   return b.ego && occupies(at.ego, slot.direction, slot.lane);
 }
 
-// The vehicles of the slot's lane (world indices; -1 for the ego) too near a vehicle of length
-// `length_m` created at `s_m` at `speed_mps`: closer than a standstill distance and a time gap at
-// the follower's speed.
-std::vector<int> place_blockers(const Slot& slot, double s_m, double length_m, double speed_mps,
-                                const CastingSituation& at) {
+// The vehicles of the slot's lane (and the ego) too near a vehicle of length `length_m` created at
+// `s_m` at `speed_mps`: closer than a standstill distance and a time gap at the follower's speed.
+// Counted up to `limit` (the search stops there): how many, and the world index of the first
+// vehicle found (-1 where the first is the ego, or there is none).
+struct Blockers {
+  int count = 0;
+  int first = -1;
+};
+Blockers place_blockers(const Slot& slot, double s_m, double length_m, double speed_mps, const CastingSituation& at,
+                        int limit) {
   const int dir = sign(slot.direction);
   const double p = dir * s_m;
   auto clear = [&](double centre_p, double other_length_m, double follower_speed_mps) {
     const double bumper = std::abs(centre_p - p) - 0.5 * (other_length_m + length_m);
     return bumper >= kPlacementStandstill_m + kPlacementTimeGap_s * follower_speed_mps;
   };
-  std::vector<int> blockers;
-  for (std::size_t i = 0; i < at.world.size(); ++i) {
+  Blockers b;
+  for (std::size_t i = 0; i < at.world.size() && b.count < limit; ++i) {
     const ObservedVehicle& v = at.world[i];
     if (!occupies(v, slot.direction, slot.lane)) continue;
     const double q = dir * v.s_m;
-    if (!clear(q, v.length_m, q < p ? v.speed_mps : speed_mps)) blockers.push_back(static_cast<int>(i));
+    if (clear(q, v.length_m, q < p ? v.speed_mps : speed_mps)) continue;
+    if (b.count++ == 0) b.first = static_cast<int>(i);
   }
   const EgoObservation& e = at.ego;
-  if (occupies(e, slot.direction, slot.lane)) {
+  if (b.count < limit && occupies(e, slot.direction, slot.lane)) {
     const double q = dir * e.s_m;
-    if (!clear(q, e.length_m, q < p ? e.speed_mps : speed_mps)) blockers.push_back(-1);
+    if (!clear(q, e.length_m, q < p ? e.speed_mps : speed_mps)) ++b.count;
   }
-  return blockers;
+  return b;
+}
+
+// The driver's sight for the director: up to hidden_margin_m beyond the inner region either way.
+struct Sight {
+  double front_m = 0.0;
+  double rear_m = 0.0;
+  bool hides(double s_m) const { return s_m > front_m || s_m < rear_m; }
+};
+Sight sight_of(const WindowBounds& window, const DirectorConfig& cfg) {
+  return {window.inner_front_m + cfg.hidden_margin_m, window.inner_rear_m - cfg.hidden_margin_m};
 }
 
 // A place out of sight that hidden_placement tries: where, the speed that takes a vehicle from
@@ -97,11 +113,10 @@ void search_places(const Slot& slot, const CastingSituation& at, const WindowBou
   const double t = at.time_to_start_s;
   if (t <= 0.0) return;
   const double ideal = slot.s_m - sign(slot.direction) * slot.speed_mps * t;
-  const double inner_front = window.inner_front_m + cfg.hidden_margin_m;
-  const double inner_rear = window.inner_rear_m - cfg.hidden_margin_m;
+  const Sight sight = sight_of(window, cfg);
   const struct { double lo, hi; Region region; } zones[] = {
-      {inner_front, window.front_edge_m - kEdgeMargin_m, Region::kOuterFront},
-      {window.rear_edge_m + kEdgeMargin_m, inner_rear, Region::kOuterRear},
+      {sight.front_m, window.front_edge_m - kEdgeMargin_m, Region::kOuterFront},
+      {window.rear_edge_m + kEdgeMargin_m, sight.rear_m, Region::kOuterRear},
   };
   const SpeedBand band = transport_band(slot, cfg);
   const bool one_lane = at.lanes.of(slot.direction) <= 1;
@@ -230,7 +245,7 @@ std::optional<Placement> hidden_placement(const Slot& slot, double length_m, con
   std::optional<Placement> best;
   double best_cost = kInf;
   search_places(slot, at, window, cfg, [&](const PlaceTry& place) {
-    if (!place_blockers(slot, place.s_m, length_m, place.needed_mps, at).empty()) return false;
+    if (place_blockers(slot, place.s_m, length_m, place.needed_mps, at, 1).count > 0) return false;
     // As for a vehicle of the traffic (casting_cost): getting past the ego into its lane costs a
     // creation more.
     const double cost = std::abs(place.needed_mps - slot.speed_mps) + (place.passes_ego ? creation_cost(cfg) : 0.0);
@@ -245,21 +260,20 @@ std::optional<Placement> hidden_placement(const Slot& slot, double length_m, con
 
 int blocker_to_take_off(const Slot& slot, double length_m, const std::vector<bool>& available,
                         const CastingSituation& at, const WindowBounds& window, const DirectorConfig& cfg) {
-  const double sight_front = window.inner_front_m + cfg.hidden_margin_m;
-  const double sight_rear = window.inner_rear_m - cfg.hidden_margin_m;
-  auto out_of_sight = [&](double s_m) { return s_m > sight_front || s_m < sight_rear; };
+  const Sight sight = sight_of(window, cfg);
   int best = -1;
   double best_cost = kInf;
   search_places(slot, at, window, cfg, [&](const PlaceTry& place) {
     if (place.passes_ego) return false;
-    const std::vector<int> blockers = place_blockers(slot, place.s_m, length_m, place.needed_mps, at);
-    if (blockers.size() != 1 || blockers.front() < 0) return false;
-    const auto i = static_cast<std::size_t>(blockers.front());
-    if (!available[i] || !out_of_sight(at.world[i].s_m)) return false;
+    // A single blocker, and a vehicle rather than the ego.
+    const Blockers blockers = place_blockers(slot, place.s_m, length_m, place.needed_mps, at, 2);
+    if (blockers.count != 1 || blockers.first < 0) return false;
+    const auto i = static_cast<std::size_t>(blockers.first);
+    if (!available[i] || !sight.hides(at.world[i].s_m)) return false;
     const double cost = std::abs(place.needed_mps - slot.speed_mps);
     if (cost < best_cost) {
       best_cost = cost;
-      best = blockers.front();
+      best = blockers.first;
     }
     return true;
   });

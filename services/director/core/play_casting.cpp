@@ -97,10 +97,10 @@ std::string PlayRun::cast(const PlayInput& in, const std::vector<Slot>& slots, c
       chosen[k] = cheapest_fit(sub_slots[k], sub_roles[k], castable, sub_at[k], chosen, setting_.director);
       // Not even that: a vehicle out of sight is taken off the road where a single one keeps a
       // place from being free, and the role is created there once it is gone.
-      const std::string made = chosen[k] < 0 && !restaged_only[k]
-                                   ? make_room(in, role, sub_slots[k], in.factory.length_m(type), sub_at[k], window, out)
-                                   : std::string();
-      if (!made.empty()) detail += (detail.empty() ? "" : ", ") + rc.name + ": " + made;
+      if (chosen[k] < 0) {
+        const std::string made = make_room(in, role, sub_slots[k], in.factory.length_m(type), sub_at[k], window, out);
+        if (!made.empty()) detail += (detail.empty() ? "" : ", ") + rc.name + ": " + made;
+      }
     }
     if (chosen[k] >= 0) {
       replace();
