@@ -292,9 +292,13 @@ TEST(Clearing, BehindItsActorOnOneLanePerDirectionTheEgoMeetsABusyOncomingLane) 
   // An oncoming vehicle near the edge of sight, on either side: the lane is busy.
   EXPECT_EQ(created(with([](Case& c) { c.oncoming_m = -150.0; })), 0U);
   EXPECT_EQ(created(with([](Case& c) { c.oncoming_m = 150.0; })), 0U);
-  // Not while someone passes behind the lead (it needs the lane); once it is beyond the lead, yes.
+  // Not while someone passes between the ego and the lead (it needs the lane); once it is beyond
+  // the lead, yes.
   EXPECT_EQ(created(with([](Case& c) { c.passer_ahead_m = 20.0; })), 0U);
   EXPECT_EQ(created(with([](Case& c) { c.passer_ahead_m = 60.0; })), 1U);
+  // Nor for one passing behind the ego: counted, it kept the lane in front of the ego empty (slow
+  // truck, seed 36, a car passing 200 m behind the ego; stop 57).
+  EXPECT_EQ(created(with([](Case& c) { c.passer_ahead_m = -100.0; })), 1U);
   // Not with a car between (in the gap's stretch the gap opens instead), nor with the gap off.
   EXPECT_EQ(created(with([](Case& c) { c.between = true; })), 0U);
   EXPECT_EQ(created(with([](Case& c) {

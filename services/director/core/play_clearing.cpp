@@ -196,7 +196,7 @@ bool PlayRun::someone_passing_behind(const PlayInput& in, double actor_ahead_m) 
   const int dir = sign(in.ego.direction);
   return std::any_of(in.world.begin(), in.world.end(), [&](const ObservedVehicle& v) {
     const double ahead = dir * (v.s_m - in.ego.s_m);
-    return v.direction == in.ego.direction && passing(v, setting_.lanes) && ahead > -setting_.window.inner_behind_m &&
+    return v.direction == in.ego.direction && passing(v, setting_.lanes) && ahead > 0.0 &&
            ahead < actor_ahead_m + kPassedBeyond_m;
   });
 }
