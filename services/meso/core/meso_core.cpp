@@ -63,9 +63,11 @@ StepOutput MesoCore::step(const StepInput& in) {
   ++counters_.steps;
   adopt(in);
   overtakers_.clear();
-  const auto& vehicles = fleet_.vehicles();
-  for (std::size_t i = 0; i < vehicles.size(); ++i) {
-    if (overtaking(vehicles[i])) overtakers_.push_back(i);
+  if (env_.two_way()) {  // nobody uses an oncoming lane elsewhere
+    const auto& vehicles = fleet_.vehicles();
+    for (std::size_t i = 0; i < vehicles.size(); ++i) {
+      if (overtaking(vehicles[i])) overtakers_.push_back(i);
+    }
   }
   const int into_period = static_cast<int>(in.step % static_cast<Step>(steps_per_plan_));
   const bool planning = into_period == 0;
@@ -100,6 +102,7 @@ bool MesoCore::starts_overtaking(Vehicle& v, double desired_speed_mps) {
 }
 
 void MesoCore::drive_overtakers() {
+  if (overtakers_.empty()) return;
   auto& vehicles = fleet_.vehicles();
   // Every decision from the same snapshot first, then commit, as micro does.
   std::vector<Decision> decisions;
@@ -268,22 +271,27 @@ void MesoCore::move() {
     if (next <= 0.0) v.accel_mps2 = -v.speed_mps / dt;  // stops within this step, and stays (0 from the next)
     v.speed_mps = std::max(0.0, next);
     v.s_m += sign(v.direction) * v.speed_mps * dt;
-    continue_lane_change(v, dt);
+    if (v.lane_change.active()) {
+      continue_lane_change(v, dt);
+    } else {
+      v.lane_change.since_last_change_s += dt;  // all continue_lane_change does then
+    }
   }
 }
 
-MesoCore::Fate MesoCore::fate_of(const Vehicle& v, const WindowBounds& w) const {
+MesoCore::Fate MesoCore::fate_of(const Vehicle& v, Region r, const WindowBounds& w) const {
+  const bool withdrawn = v.control.mode == ControlMode::kWithdrawn;
+  if (!withdrawn && serves(r)) return Fate::kStays;  // the usual step: on in an outer region served here
   const double margin = scenario_.window.handoff_hysteresis_m;
   // Withdrawn by the director: off the road where the driver cannot see it, in the middle of a
   // pass or not (in the inner region it drives on, as micro would drive it).
-  if (v.control.mode == ControlMode::kWithdrawn && !w.in_inner(v.s_m)) return Fate::kTakenOff;
+  if (withdrawn && r != Region::kInner) return Fate::kTakenOff;
   const bool out_ahead = v.s_m > w.front_edge_m + margin;
   if ((out_ahead && v.direction == Direction::kBackward) || v.s_m < w.rear_edge_m - margin) return Fate::kRetires;
   // An overtaker finishes its pass here first: a handoff does not carry the manoeuvre (micro
   // holds its own overtakers back the same way).
   if (overtaking(v)) return Fate::kStays;
   if (out_ahead) return Fate::kToFrontZone;
-  const Region r = w.region_of(v.s_m);
   if (r == Region::kInner) return Fate::kToMicro;
   if (r != Region::kOutside && !serves(r)) return Fate::kToOtherMeso;
   return Fate::kStays;
@@ -298,8 +306,9 @@ StepOutput MesoCore::hand_off(const StepInput& in) {
   // the window; published once more, outside); others leaving the window retire (not published).
   std::vector<VehicleId> leaving;  // in id order
   for (const Vehicle& v : fleet_.vehicles()) {
-    const Fate fate = fate_of(v, w);
-    const Region r = fate == Fate::kToFrontZone ? Region::kOutside : w.region_of(v.s_m);
+    const Region here = w.region_of(v.s_m);
+    const Fate fate = fate_of(v, here, w);
+    const Region r = fate == Fate::kToFrontZone ? Region::kOutside : here;
     const bool gone = fate == Fate::kRetires || fate == Fate::kTakenOff;
     if (!gone) out.states.emplace_back(v, r);
     if (fate == Fate::kStays) continue;

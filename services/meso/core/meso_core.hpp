@@ -95,7 +95,8 @@ class MesoCore {
   bool starts_overtaking(Vehicle& v, double desired_speed_mps);
   void drive_overtakers();
   void move();
-  Fate fate_of(const Vehicle& v, const WindowBounds& w) const;
+  // `r`: the region it is in (w.region_of).
+  Fate fate_of(const Vehicle& v, Region r, const WindowBounds& w) const;
   // The nearer leader of the lanes it occupies (of its own lane only if `own_lane_only`: a change
   // called off), an oncoming vehicle in its lane, or the start of a closure of its lane.
   Ahead ahead_of(const Vehicle& v, bool own_lane_only) const;
