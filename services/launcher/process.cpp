@@ -10,6 +10,7 @@
 #include <cstring>
 #include <deque>
 #include <fstream>
+#include <sstream>
 #include <thread>
 
 namespace entourage::launcher {
@@ -89,6 +90,26 @@ bool Child::wait(double timeout_s) {
     std::this_thread::sleep_for(kPoll);
   }
   return true;
+}
+
+std::optional<double> Child::cpu_s() const {
+  if (pid_ <= 0 || exit_code_) return std::nullopt;
+  std::ifstream in("/proc/" + std::to_string(pid_) + "/stat");
+  std::string stat;
+  if (!std::getline(in, stat)) return std::nullopt;
+  // The command name (field 2) is in parentheses and may hold spaces: count the fields after it,
+  // from field 3 (the state) to 15 (stime); utime is field 14.
+  const auto name_end = stat.rfind(')');
+  if (name_end == std::string::npos) return std::nullopt;
+  std::istringstream rest(stat.substr(name_end + 1));
+  std::string skipped;
+  for (int field = 3; field <= 13; ++field) rest >> skipped;
+  unsigned long long user_ticks = 0;
+  unsigned long long system_ticks = 0;
+  rest >> user_ticks >> system_ticks;
+  const long ticks_per_s = ::sysconf(_SC_CLK_TCK);
+  if (!rest || ticks_per_s <= 0) return std::nullopt;
+  return static_cast<double>(user_ticks + system_ticks) / static_cast<double>(ticks_per_s);
 }
 
 std::string Child::log_tail(std::size_t lines) const {

@@ -31,6 +31,9 @@ class Child {
   // Exit code (or 128 + signal) once ended.
   std::optional<int> exit_code() const { return exit_code_; }
   bool killed_by_us() const { return killed_by_us_; }
+  // The CPU time the process has used so far (user and system, all its threads; Linux's
+  // /proc/<pid>/stat, in clock ticks of 10 ms); nullopt once it has ended or where it cannot be read.
+  std::optional<double> cpu_s() const;
   // The last lines of the log, for error messages.
   std::string log_tail(std::size_t lines) const;
 

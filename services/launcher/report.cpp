@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <tuple>
 
@@ -47,6 +48,26 @@ void print_flow(const char* what, const recording::FlowMeasurement& f, std::ostr
       << f1(f.demand_veh_per_h) << " veh/h (" << (f.relative_error() >= 0 ? "+" : "") << f1(100.0 * f.relative_error())
       << " % ± " << f1(100.0 * f.relative_standard_error()) << " %; " << f.vehicles << " vehicles, " << f.crossings
       << " detector crossings in " << f1(f.observed_s / 3600.0) << " detector-hours)\n";
+}
+
+// Each service's CPU time per step while the run drove, and for the services that publish vehicle
+// states, how many they wrote per step (the recording's rows by owner): in a process, most of a
+// step's CPU time goes to DDS (reading the world, writing each state), not to the core's model.
+void print_service_cpu(const std::vector<ServiceCpu>& cpu, const recording::Tables& tables, std::uint64_t steps,
+                       std::ostream& out) {
+  if (cpu.empty() || steps == 0) return;
+  std::map<std::string, std::uint64_t> rows_by_owner;
+  for (const auto& v : tables.vehicles) ++rows_by_owner[v.owner];
+  const auto per_step = [steps](double total) { return total / static_cast<double>(steps); };
+  out << "  CPU per step while driving (each service's process, all its threads; vehicle states it wrote per step):";
+  const char* separator = " ";
+  for (const ServiceCpu& c : cpu) {
+    out << separator << c.service << ' ' << f1(1e6 * per_step(c.cpu_s)) << " us";
+    const auto rows = rows_by_owner.find(c.service);
+    if (rows != rows_by_owner.end()) out << " (" << f1(per_step(static_cast<double>(rows->second))) << ")";
+    separator = ", ";
+  }
+  out << "\n";
 }
 
 }  // namespace
@@ -131,6 +152,7 @@ bool print_report(const ReportInput& in, const recording::Tables& tables, std::o
         << f1(percentile(in.latencies_ms, 0.99)) << " ms, max " << f1(percentile(in.latencies_ms, 1.0)) << " ms over "
         << in.latencies_ms.size() << " steps\n";
   }
+  print_service_cpu(in.service_cpu, tables, s.steps, out);
   bool all_ok = true;
   out << "  invariants:\n";
   for (const auto& c : recording::check_invariants(tables, in.scenario.ego)) {

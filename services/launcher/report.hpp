@@ -12,6 +12,12 @@
 
 namespace entourage::launcher {
 
+// A service's process and the CPU time it used while the run drove (from the first step on).
+struct ServiceCpu {
+  std::string service;  // as in the recording's owner column (micro, meso, meso-front, ...)
+  double cpu_s = 0.0;
+};
+
 struct ReportInput {
   std::string recording;  // the recording's path (or the CSV directory it was exported to)
   std::string logs_dir;  // empty: not a run
@@ -19,6 +25,7 @@ struct ReportInput {
   double wall_s = 0.0;  // 0: not a run
   bool realtime = false;
   std::vector<double> latencies_ms;
+  std::vector<ServiceCpu> service_cpu;  // empty: not a run, or not measured
 };
 
 // Prints the report of a recording's rows (from the recording or its CSV export); false if an

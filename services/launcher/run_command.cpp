@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include "cli/args.hpp"
@@ -80,6 +81,9 @@ class Run {
   bool wait_ready();
   enum class Outcome { kFinished, kInterrupted, kFailed };
   Outcome drive();
+  // Each service's CPU time from the first step to now (services whose figure cannot be read, e.g.
+  // one that has ended, are left out).
+  std::vector<ServiceCpu> cpu_while_driving() const;
   bool stop_all();
   bool child_failed(std::string* who);
   void print_progress(const Snapshot& s, bool final_line);
@@ -102,6 +106,7 @@ class Run {
   Clock::time_point last_progress_;
   Step last_progress_step_ = 0;
   double wall_s_ = 0.0;
+  std::vector<std::optional<double>> cpu_at_start_s_;  // each child's CPU time when the run began to drive
   bool tty_ = false;
 };
 
@@ -266,6 +271,15 @@ Run::Outcome Run::drive() {
   }
 }
 
+std::vector<ServiceCpu> Run::cpu_while_driving() const {
+  std::vector<ServiceCpu> out;
+  for (std::size_t i = 0; i < children_.size() && i < cpu_at_start_s_.size(); ++i) {
+    const std::optional<double> now = children_[i]->cpu_s();
+    if (now && cpu_at_start_s_[i]) out.push_back({children_[i]->name(), *now - *cpu_at_start_s_[i]});
+  }
+  return out;
+}
+
 // One service at a time, in the order they were started (the ego, the source of the steps, first;
 // the recorder last), so that only one participant leaves the domain at a time.
 bool Run::stop_all() {
@@ -319,10 +333,12 @@ int Run::execute() {
     return 1;
   }
   started_ = last_progress_ = Clock::now();
+  for (const auto& c : children_) cpu_at_start_s_.push_back(c->cpu_s());
   const Outcome outcome = drive();
   wall_s_ = std::chrono::duration<double>(Clock::now() - started_).count();
+  const std::vector<ServiceCpu> cpu = cpu_while_driving();
   if (outcome == Outcome::kInterrupted) std::cout << (tty_ ? "\n" : "") << "entourage: interrupted; stopping the services\n";
-  ReportInput in{opt_.record, logs_dir_, sc_.config, wall_s_, opt_.realtime, monitor_->latencies_ms()};
+  ReportInput in{opt_.record, logs_dir_, sc_.config, wall_s_, opt_.realtime, monitor_->latencies_ms(), cpu};
   // The launcher leaves the domain before the services do: it then never handles a service's
   // leaving (where Fast DDS 2.9.1's lease race lies, see stop_all).
   node_.reset();  // first: its readers' handlers are the monitor's

@@ -2,9 +2,11 @@
 // leaves the DDS domain (Fast DDS 2.9.1's lease race, services/launcher/README.md).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <string>
+#include <thread>
 
 #include <unistd.h>
 
@@ -36,7 +38,7 @@ std::unique_ptr<Child> finished(const std::string& name, const std::string& scri
 class LauncherProcess : public ::testing::Test {
  protected:
   void TearDown() override {
-    for (const char* n : {"lease_race", "other_abort", "text_only", "killed"}) std::filesystem::remove(log_path(n));
+    for (const char* n : {"lease_race", "other_abort", "text_only", "killed", "busy"}) std::filesystem::remove(log_path(n));
   }
 };
 
@@ -74,6 +76,30 @@ TEST_F(LauncherProcess, AProcessKilledByTheLauncherIsNot) {
   EXPECT_EQ(c->exit_code(), 128 + SIGKILL);
   EXPECT_TRUE(c->killed_by_us());
   EXPECT_FALSE(aborted_in_fastdds_lease_race(*c, kTail));
+}
+
+// The run's summary gives each service's CPU time per step from Child::cpu_s: a shell that counts
+// (one thread, busy) shows CPU time that grows, never more than the wall time it has run, and none
+// once it has ended.
+TEST_F(LauncherProcess, TheCpuTimeOfARunningChildIsReadAndGrows) {
+  Child c("busy", {"/bin/sh", "-c", "while :; do :; done"}, log_path("busy"));
+  std::string error;
+  ASSERT_TRUE(c.start(&error)) << error;
+  const auto started = std::chrono::steady_clock::now();
+  double cpu = 0.0;
+  while (cpu < 0.2 && std::chrono::steady_clock::now() - started < std::chrono::duration<double>(kWait_s)) {
+    const std::optional<double> now = c.cpu_s();
+    ASSERT_TRUE(now) << "the CPU time of a running child could not be read";
+    EXPECT_GE(*now, cpu);
+    cpu = *now;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  EXPECT_GE(cpu, 0.2) << "a busy shell used no CPU time in " << wall_s << " s";
+  EXPECT_LE(cpu, wall_s + 0.05) << "one busy thread cannot use more CPU time than the time it ran";
+  c.signal(SIGKILL);
+  ASSERT_TRUE(c.wait(kWait_s));
+  EXPECT_FALSE(c.cpu_s()) << "an ended process has no CPU time to read";
 }
 
 }  // namespace
