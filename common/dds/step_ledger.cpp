@@ -12,8 +12,11 @@ void StepLedger::on_step_done(ServiceId from, Step step, const TopicCounts& anno
   e.announced = announced;
 }
 
-void StepLedger::on_sample(ServiceId from, Step step, Topic topic) {
-  ++steps_[step][from.code()].received[static_cast<std::size_t>(topic)];
+bool StepLedger::on_sample(ServiceId from, Step step, Topic topic) {
+  Entry& e = steps_[step][from.code()];
+  const auto t = static_cast<std::size_t>(topic);
+  ++e.received[t];
+  return e.reported && e.received[t] == e.announced[t];
 }
 
 bool StepLedger::reported(ServiceId from, Step step) const {

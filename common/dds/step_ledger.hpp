@@ -26,7 +26,9 @@ class StepLedger {
   StepLedger(std::vector<ServiceId> peers, ServiceId self);
 
   void on_step_done(ServiceId from, Step step, const TopicCounts& announced);
-  void on_sample(ServiceId from, Step step, Topic topic);
+  // True when this sample was the last `from` announced on `topic` for `step` (its report came
+  // first): the only sample that can complete a step, so the only one worth waking a waiter for.
+  bool on_sample(ServiceId from, Step step, Topic topic);
 
   // Every peer except self reported `step` and all their announced samples on `topics` arrived.
   bool complete(Step step, TopicMask topics) const;

@@ -33,6 +33,29 @@ TEST(StepLedger, CompleteWhenAllPeersReportedAndAllSamplesArrived) {
   EXPECT_FALSE(l.complete(5, kWorld));
 }
 
+// The inbox wakes its waiter only for a report or for the sample that completes one (a wake per
+// sample cost every service a thread switch per vehicle state): whatever the order, the event that
+// makes a step complete is one of those.
+TEST(StepLedger, OnlyTheLastAnnouncedSampleAfterItsReportCompletesIt) {
+  StepLedger l({kEgo, kMicro, kMeso}, kMicro);
+  l.on_step_done(kEgo, 4, counts(0));
+  EXPECT_FALSE(l.on_sample(kMeso, 4, Topic::kVehicleState)) << "before its report";
+  l.on_step_done(kMeso, 4, counts(3, 1));
+  EXPECT_FALSE(l.on_sample(kMeso, 4, Topic::kVehicleState)) << "the second of three";
+  EXPECT_FALSE(l.complete(4, kWorld));
+  EXPECT_TRUE(l.on_sample(kMeso, 4, Topic::kVehicleState)) << "the third of three";
+  EXPECT_FALSE(l.complete(4, kWorld)) << "the handoff is still missing";
+  EXPECT_TRUE(l.on_sample(kMeso, 4, Topic::kHandoff));
+  EXPECT_TRUE(l.complete(4, kWorld));
+  EXPECT_FALSE(l.on_sample(kMeso, 4, Topic::kVehicleState)) << "one more than announced completes nothing new";
+  // All samples before the report: the report is the event that completes the step.
+  l.on_sample(kMeso, 5, Topic::kVehicleState);
+  l.on_step_done(kEgo, 5, counts(0));
+  EXPECT_FALSE(l.complete(5, kWorld));
+  l.on_step_done(kMeso, 5, counts(1));
+  EXPECT_TRUE(l.complete(5, kWorld));
+}
+
 TEST(StepLedger, SamplesOnTopicsNotWaitedForDoNotMatter) {
   StepLedger l({kEgo, kMeso}, kEgo);
   l.on_step_done(kMeso, 1, counts(3, 2));
