@@ -271,11 +271,7 @@ void MesoCore::move() {
     if (next <= 0.0) v.accel_mps2 = -v.speed_mps / dt;  // stops within this step, and stays (0 from the next)
     v.speed_mps = std::max(0.0, next);
     v.s_m += sign(v.direction) * v.speed_mps * dt;
-    if (v.lane_change.active()) {
-      continue_lane_change(v, dt);
-    } else {
-      v.lane_change.since_last_change_s += dt;  // all continue_lane_change does then
-    }
+    continue_lane_change(v, dt);
   }
 }
 
