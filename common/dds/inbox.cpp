@@ -24,6 +24,10 @@ bool Inbox::refuse(const std::optional<std::string>& reason, const char* what, s
   return !keep_refused_;
 }
 
+void Inbox::arrived_locked(ServiceId from, Step step, Topic topic) {
+  if (ledger_.on_sample(from, step, topic)) changed_.notify_all();
+}
+
 void Inbox::add(const msg::EgoState& m) {
   if (self_ == kEgoService) return;
   std::lock_guard<std::mutex> lock(mutex_);
@@ -36,36 +40,32 @@ void Inbox::add(const msg::VehicleState& m) {
   const ServiceId from = ServiceId::from_code(m.owner());
   if (from == self_) return;
   std::lock_guard<std::mutex> lock(mutex_);
-  const bool completes = ledger_.on_sample(from, m.step(), Topic::kVehicleState);
+  arrived_locked(from, m.step(), Topic::kVehicleState);
   if (!refuse(check(m, limits_), "vehicle_state", m.id(), m.step())) buckets_[m.step()].vehicles.push_back(m);
-  if (completes) changed_.notify_all();
 }
 
 void Inbox::add(const msg::Handoff& m) {
   const ServiceId from = ServiceId::from_code(m.from_service());
   if (from == self_) return;
   std::lock_guard<std::mutex> lock(mutex_);
-  const bool completes = ledger_.on_sample(from, m.step(), Topic::kHandoff);
+  arrived_locked(from, m.step(), Topic::kHandoff);
   if (!refuse(check(m, limits_), "handoff", m.vehicle_id(), m.step())) buckets_[m.step()].handoffs.push_back(m);
-  if (completes) changed_.notify_all();
 }
 
 void Inbox::add(const msg::PlayStatus& m) {
   const ServiceId from{Role::kDirector, 0};
   if (from == self_) return;
   std::lock_guard<std::mutex> lock(mutex_);
-  const bool completes = ledger_.on_sample(from, m.step(), Topic::kPlayStatus);  // arrived, even if refused
+  arrived_locked(from, m.step(), Topic::kPlayStatus);  // arrived, even if refused
   if (!refuse(check(m, limits_), "play_status", m.play_id(), m.step())) buckets_[m.step()].plays.push_back(m);
-  if (completes) changed_.notify_all();
 }
 
 void Inbox::add(const msg::ActorCommand& m) {
   const ServiceId from{Role::kDirector, 0};
   if (from == self_) return;
   std::lock_guard<std::mutex> lock(mutex_);
-  const bool completes = ledger_.on_sample(from, m.step(), Topic::kActorCommand);
+  arrived_locked(from, m.step(), Topic::kActorCommand);
   if (!refuse(check(m, limits_), "actor_command", m.vehicle_id(), m.step())) buckets_[m.step()].commands.push_back(m);
-  if (completes) changed_.notify_all();
 }
 
 void Inbox::add(const msg::StepDone& m) {

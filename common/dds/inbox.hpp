@@ -80,6 +80,10 @@ class Inbox {
 
  private:
   bool refuse(const std::optional<std::string>& reason, const char* what, std::uint32_t id, Step step);
+  // Counts a sample of a lockstep topic as arrived (refused or not) and wakes the waiting step
+  // only where it is the last its sender announced (StepLedger::on_sample): a wake per sample cost
+  // every service a thread switch per vehicle state. Under the lock.
+  void arrived_locked(ServiceId from, Step step, Topic topic);
   // Removes and returns the samples of kind `samples` of every step before `end` (lock held).
   template <class T>
   std::vector<T> take_before_locked(Step end, std::vector<T> Bucket::*samples);
