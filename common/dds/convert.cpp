@@ -187,7 +187,38 @@ msg::VehicleState to_msg(const VehicleReport& r, ServiceId owner, Step step, dou
   m.accel_mps2(r.accel_mps2);
   m.length_m(r.length_m);
   m.width_m(r.width_m);
+  m.lane_change_phase(static_cast<uint8_t>(r.lane_change.phase));
+  m.lane_change_from(static_cast<int16_t>(r.lane_change.from_lane));
+  m.lane_change_to(static_cast<int16_t>(r.lane_change.to_lane));
+  m.lane_change_elapsed_s(r.lane_change.phase_elapsed_s);
+  m.lane_change_duration_s(r.lane_change.duration_s);
+  m.control_indicator(static_cast<uint8_t>(r.control_indicator));
   return m;
+}
+
+VehicleReport report_from_msg(const msg::VehicleState& m) {
+  VehicleReport r;
+  r.id = m.id();
+  r.region = static_cast<Region>(m.region());
+  r.type_index = m.type_index();
+  r.direction = direction_of(m.direction());
+  r.indicator = static_cast<Indicator>(m.indicator());
+  r.control = static_cast<ControlMode>(m.control());
+  r.lane = m.lane();
+  r.target_lane = m.target_lane();
+  r.s_m = m.s_m();
+  r.speed_mps = m.speed_mps();
+  r.accel_mps2 = m.accel_mps2();
+  r.length_m = m.length_m();
+  r.width_m = m.width_m();
+  r.lane_change.phase = static_cast<LaneChangePhase>(m.lane_change_phase());
+  r.lane_change.from_lane = m.lane_change_from();
+  r.lane_change.to_lane = m.lane_change_to();
+  r.lane_change.phase_elapsed_s = m.lane_change_elapsed_s();
+  r.lane_change.duration_s = m.lane_change_duration_s();
+  r.lateral_fraction = r.lane_change.lateral_fraction();  // as the owner's record has it
+  r.control_indicator = static_cast<Indicator>(m.control_indicator());
+  return r;
 }
 
 Handoff from_msg(const msg::Handoff& m) {

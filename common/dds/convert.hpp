@@ -27,6 +27,9 @@ msg::EgoState to_msg(const EgoObservation& e, const Road& road);
 
 ObservedVehicle from_msg(const msg::VehicleState& m);
 msg::VehicleState to_msg(const VehicleReport& r, ServiceId owner, Step step, double time_s, const Road& road);
+// The owner's record back from its message (what carries it forward: traffic/carried_states.hpp);
+// to_msg of it gives the message again, bit for bit.
+VehicleReport report_from_msg(const msg::VehicleState& m);
 
 Handoff from_msg(const msg::Handoff& m);
 msg::Handoff to_msg(const Handoff& h, double time_s, const Road& road);

@@ -224,10 +224,9 @@ LaneChangeState advance_lateral(const Vehicle& v, double dt_s) {
   return lc;
 }
 
-void finish_lane_change_if_done(Vehicle& v) {
-  LaneChangeState& lc = v.lane_change;
+void finish_lane_change_if_done(LaneChangeState& lc, int& lane) {
   if (lc.moving() && lc.phase_elapsed_s >= lc.duration_s) {
-    v.lane = lc.to_lane;
+    lane = lc.to_lane;
     lc.from_lane = lc.to_lane;
     lc.phase = LaneChangePhase::kNone;
     lc.phase_elapsed_s = 0.0;
@@ -363,20 +362,21 @@ void commit(Vehicle& v, const Decision& d, double dt_s) {
   }
   v.accel_mps2 = a;
   v.s_m += sign(v.direction) * ds;
-  finish_lane_change_if_done(v);
+  finish_lane_change_if_done(v.lane_change, v.lane);
 }
 
-void continue_lane_change(Vehicle& v, double dt_s) {
-  LaneChangeState& lc = v.lane_change;
+void continue_lane_change(LaneChangeState& lc, int& lane, double dt_s) {
   lc.since_last_change_s += dt_s;
   if (lc.phase == LaneChangePhase::kSignalling) {
     lc.phase = LaneChangePhase::kNone;
-    lc.to_lane = lc.from_lane = v.lane;
+    lc.to_lane = lc.from_lane = lane;
   } else if (lc.moving()) {
     lc.phase_elapsed_s += dt_s;
-    finish_lane_change_if_done(v);
+    finish_lane_change_if_done(lc, lane);
   }
 }
+
+void continue_lane_change(Vehicle& v, double dt_s) { continue_lane_change(v.lane_change, v.lane, dt_s); }
 
 const Occupant* nearest_leader(const Vehicle& v, const LaneIndex& index) {
   const Occupant* best = leader_of(v, index, v.lane);

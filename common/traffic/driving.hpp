@@ -69,6 +69,9 @@ void commit(Vehicle& v, const Decision& d, double dt_s);
 // For models that decide no lane changes (meso, the generator's front zone): a vehicle handed over
 // in the middle of a lane change finishes the lateral movement, one that only signalled drops it.
 void continue_lane_change(Vehicle& v, double dt_s);
+// The same on the lane change and the lane alone (a published state carried forward,
+// traffic/carried_states.hpp).
+void continue_lane_change(LaneChangeState& lc, int& lane, double dt_s);
 
 // The nearer of the leaders in the lanes `v` occupies (both while it changes lane).
 const Occupant* nearest_leader(const Vehicle& v, const LaneIndex& index);

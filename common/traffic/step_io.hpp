@@ -51,7 +51,9 @@ struct VehicleReport {
         speed_mps(v.speed_mps),
         accel_mps2(v.accel_mps2),
         length_m(v.length_m),
-        width_m(v.width_m) {}
+        width_m(v.width_m),
+        lane_change(v.lane_change),
+        control_indicator(static_cast<Indicator>(v.control.indicator)) {}
 
   VehicleId id = 0;
   Region region = Region::kOutside;
@@ -67,6 +69,11 @@ struct VehicleReport {
   double accel_mps2 = 0.0;
   double length_m = 4.5;
   double width_m = 1.8;
+  // What carries the state forward by a step without its owner (traffic/carried_states.hpp): the
+  // lane change under way (its phase, lanes, time into it and duration; the rest is the driver's
+  // and travels in handoffs only) and what a controlled actor's indicator shows outside one.
+  LaneChangeState lane_change;
+  Indicator control_indicator = Indicator::kOff;
 };
 
 struct StepOutput {

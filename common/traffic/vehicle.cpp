@@ -14,13 +14,17 @@ double LaneChangeState::moving_left_s() const {
   return phase == LaneChangePhase::kMoving ? std::max(0.0, duration_s - phase_elapsed_s) : 0.0;
 }
 
-Indicator Vehicle::indicator() const {
-  if (!lane_change.active() || lane_change.to_lane == lane_change.from_lane) {
+Indicator indicator_of(const LaneChangeState& lc, ControlMode mode, Indicator control_indicator) {
+  if (!lc.active() || lc.to_lane == lc.from_lane) {
     // A controlled actor shows what its script asks (e.g. before a cut-in).
-    return control.mode == ControlMode::kControlled ? static_cast<Indicator>(control.indicator) : Indicator::kOff;
+    return mode == ControlMode::kControlled ? control_indicator : Indicator::kOff;
   }
   // Lane numbers grow to the left for both directions.
-  return lane_change.to_lane > lane_change.from_lane ? Indicator::kLeft : Indicator::kRight;
+  return lc.to_lane > lc.from_lane ? Indicator::kLeft : Indicator::kRight;
+}
+
+Indicator Vehicle::indicator() const {
+  return indicator_of(lane_change, control.mode, static_cast<Indicator>(control.indicator));
 }
 
 }  // namespace entourage

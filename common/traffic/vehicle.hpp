@@ -106,4 +106,8 @@ struct Vehicle {
   Indicator indicator() const;
 };
 
+// The indicator of a vehicle with lane change `lc`: the side it changes to, or else what a
+// controlled actor's script shows (`control_indicator`), or off.
+Indicator indicator_of(const LaneChangeState& lc, ControlMode mode, Indicator control_indicator);
+
 }  // namespace entourage

@@ -28,6 +28,7 @@
 
 #include "cli/args.hpp"
 #include "scenario/loader.hpp"
+#include "traffic/carried_states.hpp"
 #include "window_cores.hpp"
 
 namespace entourage {
@@ -82,6 +83,8 @@ struct LiveRun {
   std::array<std::uint64_t, kCores> published{};  // vehicle states, over the run
   std::array<double, kCores> live_cpu_s{};  // timed step by step, the cores interleaved
   meso::Counters meso;                      // meso's own counts over the run
+  std::uint64_t meso_not_carried = 0;       // meso states a reader could not carry forward (carried_states.hpp)
+  double select_cpu_s = 0.0;                // finding them (SparseStates::select), over the run
   bool reached_road_end = false;
 };
 
@@ -105,6 +108,7 @@ LiveRun run_live(const ScenarioConfig& sc, std::uint64_t seed, Step last_step,
   bench::WindowCores cores(sc, seed);
   pristine->emplace(cores.generator());  // before its first step: the replays start from it
   std::array<Digest, kCores> digests;
+  SparseStates sparse(sc.step_s);
   run.inputs.reserve(static_cast<std::size_t>(last_step) + 1);
   for (Step k = 0; k <= last_step; ++k) {
     StepInput in = cores.next_input();
@@ -121,6 +125,9 @@ LiveRun run_live(const ScenarioConfig& sc, std::uint64_t seed, Step last_step,
     run.published[kGeneratorCore] += out.generator.states.size();
     run.published[kMicroCore] += out.micro.states.size();
     run.published[kMesoCore] += out.meso.states.size();
+    const double t0 = thread_cpu_s();
+    run.meso_not_carried += sparse.select(out.meso.states).size();
+    run.select_cpu_s += thread_cpu_s() - t0;
     cores.publish(in, out);
     run.inputs.push_back(std::move(in));
     if (cores.at_road_end()) {
@@ -161,6 +168,9 @@ struct Figures {
   std::array<std::uint64_t, kCores> vehicle_steps{};
   std::array<std::uint64_t, kCores> digest{};
   meso::Counters meso;
+  std::uint64_t meso_not_carried = 0;  // of meso's states, those a reader could not carry forward
+  std::uint64_t meso_published = 0;    // meso's states, over the run
+  double select_cpu_s = 0.0;
   bool reached_road_end = false;
 
   double us_per_step(std::size_t c) const { return 1e6 * cpu_s[c] / static_cast<double>(steps); }
@@ -193,6 +203,9 @@ Configuration run_configuration(const ScenarioConfig& sc, std::uint64_t seed, St
   f.digest = c.run.digest;
   f.reached_road_end = c.run.reached_road_end;
   f.meso = c.run.meso;
+  f.meso_not_carried = c.run.meso_not_carried;
+  f.meso_published = c.run.published[kMesoCore];
+  f.select_cpu_s = c.run.select_cpu_s;
   return c;
 }
 
@@ -287,6 +300,15 @@ void print_vehicle_costs(const Figures& micro_only, const Figures& split) {
               m.plans > 0 ? 100.0 * static_cast<double>(m.alert_plans) / static_cast<double>(m.plans) : 0.0,
               m.steps > 0 ? 100.0 * static_cast<double>(m.overtaking_steps) / static_cast<double>(m.steps) : 0.0,
               static_cast<unsigned long long>(m.overtakings_started));
+  std::printf("  meso states a reader could not carry forward from the last it got (traffic/carried_states.hpp): "
+              "%.1f %% (%.3f per vehicle-step); finding them %.3f us per state\n",
+              split.meso_published > 0
+                  ? 100.0 * static_cast<double>(split.meso_not_carried) / static_cast<double>(split.meso_published)
+                  : 0.0,
+              split.vehicle_steps[kMesoCore] > 0 ? static_cast<double>(split.meso_not_carried) /
+                                                       static_cast<double>(split.vehicle_steps[kMesoCore])
+                                                 : 0.0,
+              split.meso_published > 0 ? 1e6 * split.select_cpu_s / static_cast<double>(split.meso_published) : 0.0);
   const CostLine micro_line = cost_line(micro_only, split, kMicroCore);
   const CostLine meso_line = cost_line(split, micro_only, kMesoCore);
   std::printf("  as fixed + marginal (through both configurations): micro %.2f us per step + %.3f us per vehicle, "

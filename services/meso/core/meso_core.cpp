@@ -7,6 +7,7 @@
 
 #include "meso/core/meso_lanes.hpp"
 #include "traffic/actor_driving.hpp"
+#include "traffic/carried_states.hpp"
 #include "traffic/driving.hpp"
 #include "traffic/lane_changes.hpp"
 #include "traffic/overtaking_manoeuvre.hpp"
@@ -267,10 +268,7 @@ void MesoCore::move() {
       continue;
     }
     Vehicle& v = vehicles[i];
-    const double next = v.speed_mps + v.accel_mps2 * dt;
-    if (next <= 0.0) v.accel_mps2 = -v.speed_mps / dt;  // stops within this step, and stays (0 from the next)
-    v.speed_mps = std::max(0.0, next);
-    v.s_m += sign(v.direction) * v.speed_mps * dt;
+    advance_on_ramp(v.s_m, v.speed_mps, v.accel_mps2, v.direction, dt);  // as a reader carries it forward
     continue_lane_change(v, dt);
   }
 }

@@ -1,0 +1,68 @@
+#pragma once
+// Carrying a published vehicle state forward. Between two of meso's plans a vehicle's motion is
+// fixed by its state: its speed, the acceleration of its ramp and its lane change under way
+// (services/meso/README.md, *The model*). A reader that holds one state of it can therefore
+// compute every later step exactly as meso moves it, with the same operations in the same order:
+//
+//   each step:  v' = v + a dt;   if v' <= 0: a = -v / dt   (it stops within the step, and stays)
+//               v = max(0, v');  s = s + sign(direction) v dt
+//               its lane change moves on by dt (continue_lane_change: a signal ends, a sideways
+//               move goes on along its profile and ends in the target lane)
+//
+// A publisher then need not publish a vehicle whose state at a step is its previous one carried
+// forward (SparseStates), and a reader rebuilds the publisher's every state from those it
+// published and the handoffs it sent (StateTracks): bit for bit the states it would have
+// published at every step.
+
+#include <cstddef>
+#include <vector>
+
+#include "traffic/step_io.hpp"
+
+namespace entourage {
+
+// One step along a constant acceleration, stopped at standstill (MesoCore::move).
+void advance_on_ramp(double& s_m, double& speed_mps, double& accel_mps2, Direction direction, double dt_s);
+
+// A state one step later, had nothing set its ramp, its lane change or anything else anew.
+VehicleReport carried_forward(const VehicleReport& r, double dt_s);
+
+// The same state, field by field and bit for bit (the indicator and the region included).
+bool same_state(const VehicleReport& a, const VehicleReport& b);
+
+// The publisher's side: of a step's states, those a reader cannot carry forward from the ones
+// published before. A vehicle is published at the step it first appears and whenever its state
+// is not the previous step's carried forward (its ramp set at a plan, a lane change begun or
+// called off, a command, a new region, a pass driven by micro's model at every step).
+class SparseStates {
+ public:
+  explicit SparseStates(double dt_s) : dt_s_(dt_s) {}
+  // `states`: every state of the step, in id order. Returns those to publish, in id order.
+  std::vector<VehicleReport> select(const std::vector<VehicleReport>& states);
+
+ private:
+  double dt_s_;
+  std::vector<VehicleReport> previous_;  // the step before's states, in id order
+};
+
+// The reader's side, for one publisher: its states at every step from those it published and the
+// handoffs it sent. A vehicle it hands to nobody (it retires, or is taken off) is gone at the step
+// of the handoff, as its owner publishes nothing of it then; one it hands to another service is
+// published by it once more at that step, and by the new owner from the next.
+class StateTracks {
+ public:
+  explicit StateTracks(double dt_s) : dt_s_(dt_s) {}
+  // The next step: `published` (in id order) replace the states carried forward; `retired` (ids
+  // handed to nobody at this step) are gone; `handed_on` (ids handed to another service at this
+  // step) are gone from the next step on. Returns every state of the step, in id order.
+  const std::vector<VehicleReport>& step(const std::vector<VehicleReport>& published,
+                                         const std::vector<VehicleId>& retired, const std::vector<VehicleId>& handed_on);
+  const std::vector<VehicleReport>& states() const { return states_; }
+
+ private:
+  double dt_s_;
+  std::vector<VehicleReport> states_;       // the last step's, in id order
+  std::vector<VehicleId> leaving_;           // handed on at the last step, in id order
+};
+
+}  // namespace entourage
