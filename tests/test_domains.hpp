@@ -41,6 +41,7 @@ enum : int {
   kFaultClean,
   kPlays,
   kLossyHandoff,
+  kPipelineCarried,
   kEnd  // one past the last
 };
 

@@ -396,9 +396,22 @@ std::optional<std::string> check(const msg::EgoState& m, const SampleLimits& lim
   return std::nullopt;
 }
 
+// The lane change a vehicle state carries (for a reader that carries the state forward).
+std::optional<std::string> check_lane_change(const msg::VehicleState& m, const SampleLimits& limits) {
+  if (m.lane_change_phase() > static_cast<uint8_t>(LaneChangePhase::kMoving)) {
+    return "unknown lane change phase " + std::to_string(m.lane_change_phase());
+  }
+  if (m.lane_change_phase() == 0) return std::nullopt;
+  if (auto e = check_lane(m.direction(), m.lane_change_from(), m.lane_change_to(), limits)) return "lane change: " + *e;
+  if (m.lane_change_elapsed_s() < 0.0) return "a lane change's elapsed time is negative";
+  const bool moving = m.lane_change_phase() == static_cast<uint8_t>(LaneChangePhase::kMoving);
+  if (moving && m.lane_change_duration_s() <= 0.0) return "a lane change under way must have a positive duration";
+  return std::nullopt;
+}
+
 std::optional<std::string> check(const msg::VehicleState& m, const SampleLimits& limits) {
   if (!all_finite({m.time_s(), m.s_m(), m.d_m(), m.x_m(), m.y_m(), m.heading_rad(), m.speed_mps(), m.accel_mps2(),
-                   m.length_m(), m.width_m()})) {
+                   m.length_m(), m.width_m(), m.lane_change_elapsed_s(), m.lane_change_duration_s()})) {
     return "a value is not finite";
   }
   if (m.id() == kEgoVehicleId) return "vehicle id 0 is reserved for the ego";
@@ -407,6 +420,10 @@ std::optional<std::string> check(const msg::VehicleState& m, const SampleLimits&
   if (m.type_index() >= limits.vehicle_types) return "unknown vehicle type " + std::to_string(m.type_index());
   if (m.length_m() <= 0.0 || m.width_m() <= 0.0) return "length and width must be positive";
   if (auto e = check_control_mode(m.control())) return e;
+  if (auto e = check_lane_change(m, limits)) return e;
+  if (m.control_indicator() > kMaxIndicator) {
+    return "indicator " + std::to_string(m.control_indicator()) + " is not 0, 1 or 2";
+  }
   return std::nullopt;
 }
 

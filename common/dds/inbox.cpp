@@ -1,5 +1,7 @@
 #include "dds/inbox.hpp"
 
+#include <algorithm>
+
 #include <spdlog/spdlog.h>
 
 namespace entourage::dds {
@@ -125,13 +127,51 @@ std::uint64_t Inbox::bad_samples() const {
   return bad_samples_;
 }
 
+void Inbox::carry_states(const RoadConfig& road, double step_s) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  road_.emplace(road);
+  step_s_ = step_s;
+}
+
 Bucket Inbox::take(Step step) {
   std::lock_guard<std::mutex> lock(mutex_);
   auto it = buckets_.find(step);
   if (it == buckets_.end()) return {};
   Bucket b = std::move(it->second);
   buckets_.erase(it);
+  carry_forward_locked(step, b);
   return b;
+}
+
+std::uint64_t Inbox::carrying_gaps() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return carrying_gaps_;
+}
+
+void Inbox::carry_forward_locked(Step step, Bucket& b) {
+  for (const msg::StepDone& d : b.done) {
+    if (!d.carried_states() || !road_) continue;
+    Carried& c = carried_.try_emplace(d.service(), step_s_).first->second;
+    if (c.last && step != *c.last + 1) {
+      ++carrying_gaps_;
+      spdlog::error("step {} of {} taken after step {}: its carried vehicle states are off until it publishes them "
+                    "again [{} gaps so far]",
+                    step, to_string(ServiceId::from_code(d.service())), *c.last, carrying_gaps_);
+    }
+    c.last = step;
+    const auto theirs = [&d](const msg::VehicleState& m) { return m.owner() == d.service(); };
+    std::vector<VehicleReport> published;
+    for (const msg::VehicleState& m : b.vehicles) {
+      if (theirs(m)) published.push_back(report_from_msg(m));
+    }
+    b.vehicles.erase(std::remove_if(b.vehicles.begin(), b.vehicles.end(), theirs), b.vehicles.end());
+    std::sort(published.begin(), published.end(),
+              [](const VehicleReport& x, const VehicleReport& y) { return x.id < y.id; });
+    const std::vector<VehicleId> gone(d.gone().begin(), d.gone().end());
+    const ServiceId from = ServiceId::from_code(d.service());
+    const double time_s = static_cast<double>(step) * step_s_;  // as the publisher stamps its states
+    for (const VehicleReport& r : c.tracks.step(published, gone)) b.vehicles.push_back(to_msg(r, from, step, time_s, *road_));
+  }
 }
 
 template <class T>

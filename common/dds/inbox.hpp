@@ -17,6 +17,8 @@
 #include "entourage_msg/ServiceStatus.h"
 #include "dds/convert.hpp"
 #include "dds/step_ledger.hpp"
+#include "road/road.hpp"
+#include "traffic/carried_states.hpp"
 
 namespace entourage::dds {
 
@@ -64,8 +66,15 @@ class Inbox {
   std::optional<Step> newest_ego_step_locked() const;
   const std::map<std::uint16_t, msg::ServiceStatus>& statuses_locked() const { return statuses_; }
 
-  // Removes and returns what arrived for `step`.
+  // States a publisher carries forward (its step report's `carried_states`): the inbox rebuilds them
+  // in `take` (traffic/carried_states.hpp), on this road at this step length, as the publisher
+  // would have published them. Without it such a publisher's carried vehicles are missing.
+  void carry_states(const RoadConfig& road, double step_s);
+  // Removes and returns what arrived for `step`; with carry_states, a publisher's carried vehicles
+  // rebuilt in it. Taken step after step (lockstep): the rebuilding follows a publisher's steps.
   Bucket take(Step step);
+  // Steps taken out of order for a publisher whose states are carried forward (see take).
+  std::uint64_t carrying_gaps() const;
   // Removes and returns every handoff of steps up to and including `step`.
   std::vector<msg::Handoff> take_handoffs_upto(Step step);
   // Removes and returns every director command of steps up to and including `step`.
@@ -87,6 +96,15 @@ class Inbox {
   // Removes and returns the samples of kind `samples` of every step before `end` (lock held).
   template <class T>
   std::vector<T> take_before_locked(Step end, std::vector<T> Bucket::*samples);
+  // Replaces, in `b`, the vehicles of each publisher that carries its states forward by all of its
+  // states at `step` (lock held).
+  void carry_forward_locked(Step step, Bucket& b);
+
+  struct Carried {
+    explicit Carried(double step_s) : tracks(step_s) {}
+    StateTracks tracks;
+    std::optional<Step> last;  // the step last rebuilt
+  };
 
   mutable std::mutex mutex_;
   std::condition_variable changed_;
@@ -98,6 +116,10 @@ class Inbox {
   std::map<Step, Bucket> buckets_;
   std::map<std::uint16_t, msg::ServiceStatus> statuses_;
   std::uint64_t bad_samples_ = 0;
+  std::optional<Road> road_;  // with carry_states
+  double step_s_ = 0.1;
+  std::map<std::uint16_t, Carried> carried_;  // by publisher
+  std::uint64_t carrying_gaps_ = 0;
 };
 
 }  // namespace entourage::dds

@@ -21,6 +21,7 @@
 #include "dds/runtime.hpp"
 #include "dds/shell.hpp"
 #include "road/road.hpp"
+#include "traffic/carried_states.hpp"
 #include "traffic/step_io.hpp"
 
 namespace entourage::dds {
@@ -57,27 +58,40 @@ inline StepInput gather_inputs(Step k, Inbox& inbox, const std::vector<ObservedV
 // `check`) is still published, and logged as an error here: refused, the vehicle would be missing
 // from their world without a word at its source (a meso vehicle braking at 39 m/s² once became
 // invisible to the generator, which placed the next vehicle on top of it).
+//
+// With `carried_states` it writes only the states a reader cannot carry forward from the last it
+// got (traffic/carried_states.hpp) and tells its readers so in the step report (report_carrying).
 class RegionPublisher {
  public:
-  RegionPublisher(Node& node, ServiceId self, const Road& road, const SampleLimits& limits)
+  RegionPublisher(Node& node, ServiceId self, const Road& road, const SampleLimits& limits, bool carried_states = false,
+                  double step_s = 0.1)
       : self_(self),
         road_(road),
         limits_(limits),
         states_(node.writer<msg::VehicleStatePubSubType>(Topic::kVehicleState)),
-        handoffs_(node.writer<msg::HandoffPubSubType>(Topic::kHandoff)) {}
+        handoffs_(node.writer<msg::HandoffPubSubType>(Topic::kHandoff)) {
+    if (carried_states) sparse_.emplace(step_s);
+  }
 
   TopicCounts publish(Step k, double time_s, const StepOutput& out) {
     TopicCounts written{};
     own_.clear();
+    SparseStep sparse;
+    if (sparse_) sparse = sparse_->select(out.states);
+    auto to_write = sparse.states.begin();
     for (const VehicleReport& r : out.states) {
       const msg::VehicleState m = to_msg(r, self_, k, time_s, road_);
+      own_.push_back(from_msg(m));
+      if (sparse_) {  // only those a reader cannot carry forward (in id order, as out.states)
+        if (to_write == sparse.states.end() || to_write->id != r.id) continue;
+        ++to_write;
+      }
       if (const auto why = check(m, limits_)) {
         ++unfit_states_;
         spdlog::error("published the state of vehicle {} at step {} that its peers refuse: {} [{} so far]", m.id(), k,
                       *why, unfit_states_);
       }
       states_.write(m);
-      own_.push_back(from_msg(m));
       ++written[static_cast<std::size_t>(Topic::kVehicleState)];
     }
     // A vehicle handed on keeps its state instance in this writer: it is never unregistered. In
@@ -93,7 +107,14 @@ class RegionPublisher {
       handoffs_.write(to_msg(h, time_s, road_));
       ++written[static_cast<std::size_t>(Topic::kHandoff)];
     }
+    gone_ = std::move(sparse.gone);
     return written;
+  }
+
+  // Completes the step report: whether the states are carried forward, and the vehicles gone.
+  void report_carrying(msg::StepDone& report) const {
+    report.carried_states(sparse_.has_value());
+    if (sparse_) report.gone(std::vector<uint32_t>(gone_.begin(), gone_.end()));
   }
 
   const std::vector<ObservedVehicle>& own() const { return own_; }
@@ -111,14 +132,17 @@ class RegionPublisher {
   Writer<msg::VehicleStatePubSubType> states_;
   Writer<msg::HandoffPubSubType> handoffs_;
   std::vector<ObservedVehicle> own_;
+  std::optional<SparseStates> sparse_;  // with carried states
+  std::vector<VehicleId> gone_;         // at the last step published
 };
 
+// `carried_states`: publish only the states a reader cannot carry forward (RegionPublisher).
 template <class Core>
-int run_region_service(const ServiceContext& ctx, Core& core) {
+int run_region_service(const ServiceContext& ctx, Core& core, bool carried_states = false) {
   const ScenarioConfig& sc = ctx.scenario.config;
   const Road road(sc.road);
   Shell shell(ctx);
-  RegionPublisher publisher(shell.node, ctx.id, road, SampleLimits::of(sc));
+  RegionPublisher publisher(shell.node, ctx.id, road, SampleLimits::of(sc), carried_states, sc.step_s);
   if (!shell.discover(ctx)) return 1;
   run_step_loop(
       ctx, shell.inbox, shell.done, shell.status,
@@ -127,7 +151,8 @@ int run_region_service(const ServiceContext& ctx, Core& core) {
         shell.status.set_counters(shell.inbox.bad_samples(), core.counters().duplicate_handoffs);
         return publisher.publish(k, static_cast<double>(k) * sc.step_s, out);
       },
-      [&] { return static_cast<std::uint32_t>(core.fleet().size()); });
+      [&] { return static_cast<std::uint32_t>(core.fleet().size()); },
+      [&](msg::StepDone& report) { publisher.report_carrying(report); });
   return 0;
 }
 

@@ -222,7 +222,8 @@ TopicMask needed_topics(Role role) {
 
 void run_step_loop(const ServiceContext& ctx, Inbox& inbox, const Writer<msg::StepDonePubSubType>& done_writer,
                    StatusReporter& status, const std::function<TopicCounts(Step)>& compute,
-                   const std::function<std::uint32_t()>& owned) {
+                   const std::function<std::uint32_t()>& owned,
+                   const std::function<void(msg::StepDone&)>& complete_report) {
   const bool lockstep = ctx.options.time_mode == TimeMode::kLockstep;
   const TopicMask needed = needed_topics(ctx.id.role);
   std::optional<Step> first;
@@ -259,7 +260,9 @@ void run_step_loop(const ServiceContext& ctx, Inbox& inbox, const Writer<msg::St
     const auto t0 = std::chrono::steady_clock::now();
     const TopicCounts written = compute(k);
     const double compute_ms = ms_since(t0);
-    done_writer.write(make_step_done(ctx.id, k, written, owned()));
+    msg::StepDone report = make_step_done(ctx.id, k, written, owned());
+    if (complete_report) complete_report(report);
+    done_writer.write(report);
     status.step_done(k, compute_ms, late);
     if (k > 0) inbox.forget_before(k - 1);
     waiting_since = std::chrono::steady_clock::now();

@@ -94,9 +94,11 @@ TopicMask needed_topics(Role role);
 // The step loop of a service that computes one step per ego state (generator, micro, meso,
 // director). For each step k, once the ego state of k is here and (in lockstep) every peer has
 // completed k-1 with all its samples, calls compute(k), which publishes the step's samples and
-// returns how many it wrote per topic; then reports the step done. Returns at shutdown.
+// returns how many it wrote per topic; then reports the step done (`complete_report`, if given,
+// adds to the report what the service's readers need besides the counts). Returns at shutdown.
 void run_step_loop(const ServiceContext& ctx, Inbox& inbox, const Writer<msg::StepDonePubSubType>& done_writer,
                    StatusReporter& status, const std::function<TopicCounts(Step)>& compute,
-                   const std::function<std::uint32_t()>& owned);
+                   const std::function<std::uint32_t()>& owned,
+                   const std::function<void(msg::StepDone&)>& complete_report = {});
 
 }  // namespace entourage::dds

@@ -14,6 +14,7 @@ Shell::Shell(const ServiceContext& ctx, bool keep_refused)
       node(ctx.options.domain, ctx.options.qos_file, to_string(ctx.id)),
       status(node, ctx.id),
       done(node.writer<msg::StepDonePubSubType>(Topic::kStepDone)) {
+  inbox.carry_states(ctx.scenario.config.road, ctx.scenario.config.step_s);
   subscribe(node, inbox, ctx.id.role);
 }
 

@@ -43,30 +43,28 @@ bool same_state(const VehicleReport& a, const VehicleReport& b) {
          same_lane_change(a.lane_change, b.lane_change) && a.control_indicator == b.control_indicator;
 }
 
-std::vector<VehicleReport> SparseStates::select(const std::vector<VehicleReport>& states) {
-  std::vector<VehicleReport> out;
+SparseStep SparseStates::select(const std::vector<VehicleReport>& states) {
+  SparseStep out;
   auto prev = previous_.begin();
   for (const VehicleReport& s : states) {
-    while (prev != previous_.end() && prev->id < s.id) ++prev;
-    const bool carried = prev != previous_.end() && prev->id == s.id && same_state(carried_forward(*prev, dt_s_), s);
-    if (!carried) out.push_back(s);
+    for (; prev != previous_.end() && prev->id < s.id; ++prev) out.gone.push_back(prev->id);
+    const bool known = prev != previous_.end() && prev->id == s.id;
+    if (!known || !same_state(carried_forward(*prev, dt_s_), s)) out.states.push_back(s);
+    if (known) ++prev;
   }
+  for (; prev != previous_.end(); ++prev) out.gone.push_back(prev->id);
   previous_ = states;
   return out;
 }
 
 const std::vector<VehicleReport>& StateTracks::step(const std::vector<VehicleReport>& published,
-                                                    const std::vector<VehicleId>& retired,
-                                                    const std::vector<VehicleId>& handed_on) {
+                                                    const std::vector<VehicleId>& gone) {
   std::vector<VehicleReport> next;
   next.reserve(states_.size() + published.size());
   auto pub = published.begin();
-  auto take_published_before = [&](VehicleId id) {
-    for (; pub != published.end() && pub->id < id; ++pub) next.push_back(*pub);
-  };
   for (const VehicleReport& s : states_) {
-    if (std::binary_search(leaving_.begin(), leaving_.end(), s.id)) continue;
-    take_published_before(s.id);
+    if (std::binary_search(gone.begin(), gone.end(), s.id)) continue;
+    for (; pub != published.end() && pub->id < s.id; ++pub) next.push_back(*pub);
     if (pub != published.end() && pub->id == s.id) {
       next.push_back(*pub++);
     } else {
@@ -74,10 +72,6 @@ const std::vector<VehicleReport>& StateTracks::step(const std::vector<VehicleRep
     }
   }
   for (; pub != published.end(); ++pub) next.push_back(*pub);
-  const auto gone = [&](const VehicleReport& s) { return std::find(retired.begin(), retired.end(), s.id) != retired.end(); };
-  next.erase(std::remove_if(next.begin(), next.end(), gone), next.end());
-  leaving_ = handed_on;
-  std::sort(leaving_.begin(), leaving_.end());
   states_ = std::move(next);
   return states_;
 }

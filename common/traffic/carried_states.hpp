@@ -11,7 +11,7 @@
 //
 // A publisher then need not publish a vehicle whose state at a step is its previous one carried
 // forward (SparseStates), and a reader rebuilds the publisher's every state from those it
-// published and the handoffs it sent (StateTracks): bit for bit the states it would have
+// published and the vehicles it no longer has (StateTracks): bit for bit the states it would have
 // published at every step.
 
 #include <cstddef>
@@ -34,11 +34,15 @@ bool same_state(const VehicleReport& a, const VehicleReport& b);
 // published before. A vehicle is published at the step it first appears and whenever its state
 // is not the previous step's carried forward (its ramp set at a plan, a lane change begun or
 // called off, a command, a new region, a pass driven by micro's model at every step).
+struct SparseStep {
+  std::vector<VehicleReport> states;  // to publish, in id order
+  std::vector<VehicleId> gone;        // vehicles of the step before that this step has not, in id order
+};
 class SparseStates {
  public:
   explicit SparseStates(double dt_s) : dt_s_(dt_s) {}
-  // `states`: every state of the step, in id order. Returns those to publish, in id order.
-  std::vector<VehicleReport> select(const std::vector<VehicleReport>& states);
+  // `states`: every state of the step, in id order.
+  SparseStep select(const std::vector<VehicleReport>& states);
 
  private:
   double dt_s_;
@@ -46,23 +50,18 @@ class SparseStates {
 };
 
 // The reader's side, for one publisher: its states at every step from those it published and the
-// handoffs it sent. A vehicle it hands to nobody (it retires, or is taken off) is gone at the step
-// of the handoff, as its owner publishes nothing of it then; one it hands to another service is
-// published by it once more at that step, and by the new owner from the next.
+// vehicles it no longer has (SparseStep).
 class StateTracks {
  public:
   explicit StateTracks(double dt_s) : dt_s_(dt_s) {}
-  // The next step: `published` (in id order) replace the states carried forward; `retired` (ids
-  // handed to nobody at this step) are gone; `handed_on` (ids handed to another service at this
-  // step) are gone from the next step on. Returns every state of the step, in id order.
-  const std::vector<VehicleReport>& step(const std::vector<VehicleReport>& published,
-                                         const std::vector<VehicleId>& retired, const std::vector<VehicleId>& handed_on);
+  // The next step: the last step's states without `gone`, carried forward, and `published` (in id
+  // order) in place of those it replaces. Returns every state of the step, in id order.
+  const std::vector<VehicleReport>& step(const std::vector<VehicleReport>& published, const std::vector<VehicleId>& gone);
   const std::vector<VehicleReport>& states() const { return states_; }
 
  private:
   double dt_s_;
-  std::vector<VehicleReport> states_;       // the last step's, in id order
-  std::vector<VehicleId> leaving_;           // handed on at the last step, in id order
+  std::vector<VehicleReport> states_;  // the last step's, in id order
 };
 
 }  // namespace entourage

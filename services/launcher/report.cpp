@@ -51,20 +51,23 @@ void print_flow(const char* what, const recording::FlowMeasurement& f, std::ostr
 }
 
 // Each service's CPU time per step while the run drove, and for the services that publish vehicle
-// states, how many they wrote per step (the recording's rows by owner): in a process, most of a
-// step's CPU time goes to DDS (reading the world, writing each state), not to the core's model.
-void print_service_cpu(const std::vector<ServiceCpu>& cpu, const recording::Tables& tables, std::uint64_t steps,
-                       std::ostream& out) {
+// states, how many they wrote per step (their step reports' counts, else the recording's rows by
+// owner): in a process, most of a step's CPU time goes to DDS (reading the world, writing each
+// state), not to the core's model.
+void print_service_cpu(const std::vector<ServiceCpu>& cpu, const std::map<std::string, std::uint64_t>& written,
+                       const recording::Tables& tables, std::uint64_t steps, std::ostream& out) {
   if (cpu.empty() || steps == 0) return;
-  std::map<std::string, std::uint64_t> rows_by_owner;
-  for (const auto& v : tables.vehicles) ++rows_by_owner[v.owner];
+  std::map<std::string, std::uint64_t> rows_by_owner = written;
+  if (rows_by_owner.empty()) {
+    for (const auto& v : tables.vehicles) ++rows_by_owner[v.owner];
+  }
   const auto per_step = [steps](double total) { return total / static_cast<double>(steps); };
   out << "  CPU per step while driving (each service's process, all its threads; vehicle states it wrote per step):";
   const char* separator = " ";
   for (const ServiceCpu& c : cpu) {
     out << separator << c.service << ' ' << f1(1e6 * per_step(c.cpu_s)) << " us";
     const auto rows = rows_by_owner.find(c.service);
-    if (rows != rows_by_owner.end()) out << " (" << f1(per_step(static_cast<double>(rows->second))) << ")";
+    if (rows != rows_by_owner.end() && rows->second > 0) out << " (" << f1(per_step(static_cast<double>(rows->second))) << ")";
     separator = ", ";
   }
   out << "\n";
@@ -79,7 +82,11 @@ bool print_report(const ReportInput& in, std::ostream& out) {
     out << "entourage: cannot read the recording: " << error << "\n";
     return false;
   }
-  return print_report(in, recording::tables_from(*rec, type_names(in.scenario)), out);
+  ReportInput with_counts = in;
+  for (const msg::StepDone& d : rec->done) {
+    with_counts.states_written[to_string(ServiceId::from_code(d.service()))] += d.vehicle_states();
+  }
+  return print_report(with_counts, recording::tables_from(*rec, type_names(in.scenario)), out);
 }
 
 bool print_report(const ReportInput& in, const recording::Tables& tables, std::ostream& out) {
@@ -152,7 +159,7 @@ bool print_report(const ReportInput& in, const recording::Tables& tables, std::o
         << f1(percentile(in.latencies_ms, 0.99)) << " ms, max " << f1(percentile(in.latencies_ms, 1.0)) << " ms over "
         << in.latencies_ms.size() << " steps\n";
   }
-  print_service_cpu(in.service_cpu, tables, s.steps, out);
+  print_service_cpu(in.service_cpu, in.states_written, tables, s.steps, out);
   bool all_ok = true;
   out << "  invariants:\n";
   for (const auto& c : recording::check_invariants(tables, in.scenario.ego)) {

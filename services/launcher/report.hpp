@@ -4,6 +4,7 @@
 // the design's invariants, and in real time the delay from ego state to world state.
 
 #include <ostream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,10 @@ struct ReportInput {
   bool realtime = false;
   std::vector<double> latencies_ms;
   std::vector<ServiceCpu> service_cpu;  // empty: not a run, or not measured
+  // Vehicle states each service wrote over the run, by name as ServiceCpu::service (its step
+  // reports' counts); empty: counted from the recording's rows by owner, which hold, for a service
+  // whose states are carried forward, the rebuilt ones as well.
+  std::map<std::string, std::uint64_t> states_written;
 };
 
 // Prints the report of a recording's rows (from the recording or its CSV export); false if an

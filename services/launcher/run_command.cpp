@@ -46,6 +46,7 @@ struct RunOptions {
   int domain = 0;
   bool external_ego = false;
   std::string meso = "single";
+  std::string meso_states = "every";
   bool quiet = false;
   double discovery_timeout_s = 60.0;
   std::string bin_dir;
@@ -143,6 +144,7 @@ bool Run::spawn() {
     if (name == "recorder") argv.insert(argv.end(), {"--out", opt_.record});
     if (name == "meso-front") argv.insert(argv.end(), {"--regions", "front"});
     if (name == "meso-rear") argv.insert(argv.end(), {"--regions", "rear"});
+    if (name.rfind("meso", 0) == 0 && opt_.meso_states == "carried") argv.emplace_back("--carried-states");
     auto child = std::make_unique<Child>(name, argv, logs_dir_ + "/" + name + ".log");
     std::string error;
     if (!child->start(&error)) {
@@ -338,7 +340,7 @@ int Run::execute() {
   wall_s_ = std::chrono::duration<double>(Clock::now() - started_).count();
   const std::vector<ServiceCpu> cpu = cpu_while_driving();
   if (outcome == Outcome::kInterrupted) std::cout << (tty_ ? "\n" : "") << "entourage: interrupted; stopping the services\n";
-  ReportInput in{opt_.record, logs_dir_, sc_.config, wall_s_, opt_.realtime, monitor_->latencies_ms(), cpu};
+  ReportInput in{opt_.record, logs_dir_, sc_.config, wall_s_, opt_.realtime, monitor_->latencies_ms(), cpu, {}};
   // The launcher leaves the domain before the services do: it then never handles a service's
   // leaving (where Fast DDS 2.9.1's lease race lies, see stop_all).
   node_.reset();  // first: its readers' handlers are the monitor's
@@ -369,6 +371,10 @@ int run_command(int argc, char** argv) {
   args.flag("external-ego", "do not start the ego stand-in: a simulator publishes the ego state", &opt.external_ego);
   args.option("meso", "single|split", "one meso process for both outer regions, or one per region (default single)",
               &opt.meso);
+  args.option("meso-states", "every|carried",
+              "meso publishes every vehicle state at every step, or only those a reader cannot carry forward from "
+              "the last it got, the readers carrying the others forward (lockstep only; default every)",
+              &opt.meso_states);
   args.option("discovery-timeout", "SECONDS", "give up waiting for the services after this (default 60)",
               &opt.discovery_timeout_s);
   args.option("bin-dir", "DIR", "where the service executables are (default: beside entourage)", &opt.bin_dir);
@@ -380,6 +386,15 @@ int run_command(int argc, char** argv) {
   }
   if (opt.meso != "single" && opt.meso != "split") {
     std::cerr << "entourage run: --meso must be single or split\n";
+    return 2;
+  }
+  if (opt.meso_states != "every" && opt.meso_states != "carried") {
+    std::cerr << "entourage run: --meso-states must be every or carried\n";
+    return 2;
+  }
+  if (opt.meso_states == "carried" && opt.realtime) {
+    std::cerr << "entourage run: --meso-states carried needs lockstep: in real time a reader may miss a step of meso "
+                 "and could not carry its states forward\n";
     return 2;
   }
   if (opt.domain < 0 || opt.domain > 232) {

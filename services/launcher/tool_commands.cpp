@@ -126,7 +126,7 @@ int verify_command(int argc, char** argv) {
   const auto opened =
       std::filesystem::is_directory(path) ? open_export(path, "verify") : open_recording(path, "verify");
   if (!opened) return 2;
-  return print_report({path, "", opened->scenario, 0.0, false, {}, {}}, opened->tables, std::cout) ? 0 : 1;
+  return print_report({path, "", opened->scenario, 0.0, false, {}, {}, {}}, opened->tables, std::cout) ? 0 : 1;
 }
 
 int models_command(int argc, char** argv) {

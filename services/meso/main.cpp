@@ -8,16 +8,26 @@ namespace entourage {
 
 int meso_main(int argc, char** argv) {
   std::string regions = "both";
+  bool carried_states = false;
   return dds::service_main(
       argc, argv, ServiceId{Role::kMeso, kMesoBoth},
       "The outer regions: a cheap mesoscopic model between the inner region and the window's edges.",
-      [&regions](cli::Args& args) {
+      [&regions, &carried_states](cli::Args& args) {
         args.option("regions", "WHICH", "both, front or rear: the outer regions this instance serves (default both)",
                     &regions);
+        args.flag("carried-states",
+                  "publish only the vehicle states a reader cannot carry forward from the last it got; readers carry "
+                  "the others forward (lockstep only)",
+                  &carried_states);
       },
-      [](const dds::ServiceContext& ctx) {
+      [&carried_states](const dds::ServiceContext& ctx) {
+        if (carried_states && ctx.options.time_mode != dds::TimeMode::kLockstep) {
+          spdlog::error("--carried-states needs --mode lockstep: in real time a reader may not get every step of "
+                        "this service, and could not carry its states forward");
+          return 2;
+        }
         meso::MesoCore core(ctx.scenario.config, ctx.id);
-        const int rc = dds::run_region_service(ctx, core);
+        const int rc = dds::run_region_service(ctx, core, carried_states);
         const meso::Counters& c = core.counters();
         spdlog::info("vehicles adopted {}; handed to micro {}, to the other meso {}, to the front zone {}; retired {}, taken off by the director {}; "
                      "planned at {} of {} steps, {} vehicle plans ({} of alert vehicles between updates), "

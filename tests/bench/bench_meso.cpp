@@ -126,7 +126,7 @@ LiveRun run_live(const ScenarioConfig& sc, std::uint64_t seed, Step last_step,
     run.published[kMicroCore] += out.micro.states.size();
     run.published[kMesoCore] += out.meso.states.size();
     const double t0 = thread_cpu_s();
-    run.meso_not_carried += sparse.select(out.meso.states).size();
+    run.meso_not_carried += sparse.select(out.meso.states).states.size();
     run.select_cpu_s += thread_cpu_s() - t0;
     cores.publish(in, out);
     run.inputs.push_back(std::move(in));

@@ -9,6 +9,7 @@
 #include "process_util.hpp"
 #include "../test_domains.hpp"
 #include "recording/checks.hpp"
+#include "recording/recording.hpp"
 #include "recording/csv_tables.hpp"
 
 namespace entourage::testing {
@@ -17,6 +18,7 @@ namespace {
 constexpr int kDomainLockstep = test_domain::kPipelineLockstep;
 constexpr int kDomainSplit = test_domain::kPipelineSplit;
 constexpr int kDomainRealtime = test_domain::kPipelineRealtime;
+constexpr int kDomainCarried = test_domain::kPipelineCarried;
 
 std::string run_scenario(const std::string& dir, const std::string& name, int domain, const std::string& extra) {
   return bin("entourage") + " run " + source("scenarios/freeway.pbtxt") + " --quiet --domain " +
@@ -68,6 +70,47 @@ TEST(Pipeline, LockstepRunHoldsTheInvariantsAndIsReproducible) {
   EXPECT_EQ(file_bytes(dir + "/a/ego.csv"), file_bytes(dir + "/b/ego.csv"));
   EXPECT_EQ(file_bytes(dir + "/a/handoffs.csv"), file_bytes(dir + "/b/handoffs.csv"));
   EXPECT_EQ(file_bytes(dir + "/a.mcap"), file_bytes(dir + "/b.mcap")) << "recordings differ byte for byte";
+  std::filesystem::remove_all(dir);
+}
+
+// Meso writing only the states its readers cannot carry forward (--meso-states carried,
+// common/traffic/carried_states.hpp): every service sees the same world, bit for bit, so the run and
+// its recording's rows are those of a run where meso writes every state; its two processes write
+// a small share of them.
+TEST(Pipeline, MesoWritingOnlyStatesItsReadersCannotCarryForwardLeavesTheRunBitForBitTheSame) {
+  const std::string dir = fresh_dir("carried");
+  for (const char* name : {"every", "carried"}) {
+    const std::string states = std::string(" --meso-states ") + name;
+    const CommandResult r =
+        run_command(run_scenario(dir, name, kDomainCarried, "--lockstep --meso split --seed 5 --duration 40" + states));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const CommandResult e =
+        run_command(bin("entourage") + " export " + dir + "/" + name + ".mcap --csv " + dir + "/" + name);
+    ASSERT_EQ(e.exit_code, 0) << e.output;
+  }
+  EXPECT_TRUE(no_process_uses_domain(kDomainCarried));
+  for (const char* table : {"vehicles.csv", "ego.csv", "handoffs.csv", "commands.csv"}) {
+    EXPECT_EQ(file_bytes(dir + "/every/" + table), file_bytes(dir + "/carried/" + table)) << table << " differs";
+  }
+  std::string error;
+  const auto rec = recording::read_recording(dir + "/carried.mcap", &error);
+  ASSERT_TRUE(rec) << error;
+  std::uint64_t written = 0;
+  bool carried = false;
+  for (const auto& d : rec->done) {
+    if (ServiceId::from_code(d.service()).role != Role::kMeso) continue;
+    written += d.vehicle_states();
+    carried = carried || d.carried_states();
+  }
+  EXPECT_TRUE(carried);
+  std::uint64_t rows = 0;
+  for (const auto& m : rec->vehicles) rows += ServiceId::from_code(m.owner()).role == Role::kMeso ? 1 : 0;
+  EXPECT_GT(rows, 10000U);
+  EXPECT_LT(written, rows / 4) << "meso wrote " << written << " of its " << rows << " states";
+  // Real time refuses it: a reader there may miss a step.
+  const CommandResult rt = run_command(run_scenario(dir, "rt", kDomainCarried, "--realtime --meso-states carried"));
+  EXPECT_EQ(rt.exit_code, 2) << rt.output;
+  EXPECT_NE(rt.output.find("needs lockstep"), std::string::npos) << rt.output;
   std::filesystem::remove_all(dir);
 }
 

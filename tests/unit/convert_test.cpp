@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "dds/convert.hpp"
+#include "traffic/carried_states.hpp"
 #include "dds_test_util.hpp"
 
 namespace entourage::dds {
@@ -94,6 +95,36 @@ TEST(Convert, VehicleStateCarriesPoseAndOwner) {
   const ObservedVehicle o = from_msg(m);
   EXPECT_EQ(o.id, 42U);
   EXPECT_EQ(o.direction, Direction::kBackward);
+}
+
+TEST(Convert, AVehicleStateCarriesItsLaneChangeAndGivesTheOwnersRecordBack) {
+  const Road road(road_config());
+  Vehicle v = sample_vehicle();
+  v.direction = Direction::kForward;
+  v.lane_change = {0, 1, LaneChangePhase::kMoving, 1.25, 4.5, 0.0, 0.0};
+  v.control.mode = ControlMode::kControlled;
+  v.control.indicator = 2;
+  const VehicleReport r{v, Region::kOuterFront};
+  const msg::VehicleState m = to_msg(r, ServiceId{Role::kMeso, 0}, 5, 0.5, road);
+  EXPECT_FALSE(check(m, limits()).has_value());
+  const VehicleReport back = report_from_msg(m);
+  EXPECT_TRUE(same_state(back, r));
+  EXPECT_EQ(to_msg(back, ServiceId{Role::kMeso, 0}, 5, 0.5, road), m);
+  msg::VehicleState bad = m;
+  bad.lane_change_phase(3);
+  EXPECT_NE(check(bad, limits()).value_or("").find("lane change phase"), std::string::npos);
+  bad = m;
+  bad.lane_change_duration_s(0.0);
+  EXPECT_NE(check(bad, limits()).value_or("").find("positive duration"), std::string::npos);
+  bad = m;
+  bad.lane_change_elapsed_s(std::numeric_limits<double>::infinity());
+  EXPECT_NE(check(bad, limits()).value_or("").find("not finite"), std::string::npos);
+  bad = m;
+  bad.lane_change_to(7);
+  EXPECT_NE(check(bad, limits()).value_or("").find("lane change: target lane 7"), std::string::npos);
+  bad = m;
+  bad.control_indicator(4);
+  EXPECT_NE(check(bad, limits()).value_or("").find("indicator 4"), std::string::npos);
 }
 
 TEST(Convert, BadSamplesAreRefusedWithAReason) {
