@@ -42,6 +42,8 @@ enum : int {
   kPlays,
   kLossyHandoff,
   kPipelineCarried,
+  kFaultLossyCarried,
+  kFaultCleanCarried,
   kEnd  // one past the last
 };
 

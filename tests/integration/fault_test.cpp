@@ -15,12 +15,14 @@ namespace {
 
 constexpr int kDomainLossy = test_domain::kFaultLossy;
 constexpr int kDomainClean = test_domain::kFaultClean;
+constexpr int kDomainLossyCarried = test_domain::kFaultLossyCarried;
+constexpr int kDomainCleanCarried = test_domain::kFaultCleanCarried;
 
-std::string run_and_export(const std::string& dir, const std::string& env, int domain) {
+std::string run_and_export(const std::string& dir, const std::string& env, int domain, const std::string& extra = "") {
   const std::string rec = dir + "/r.mcap";
   const CommandResult r = run_command(env + bin("entourage") + " run " + source("scenarios/freeway.pbtxt") +
                                       " --lockstep --seed 7 --duration 20 --quiet --domain " + std::to_string(domain) +
-                                      " --record " + rec);
+                                      " --record " + rec + extra);
   EXPECT_EQ(r.exit_code, 0) << r.output;  // exit 0: every invariant held
   EXPECT_TRUE(no_process_uses_domain(domain));
   const CommandResult e = run_command(bin("entourage") + " export " + rec + " --csv " + dir + "/csv");
@@ -36,6 +38,22 @@ TEST(Faults, ATenthOfTheDataMessagesLostChangesNothingInTheRecording) {
     const std::string b = file_bytes(clean + file);
     EXPECT_GT(b.size(), 100U) << file;
     EXPECT_TRUE(a == b) << file << " differs between the lossy and the clean run";
+  }
+}
+
+// Meso writing only the states its readers cannot carry forward (--meso-states carried): a lost
+// sample that a reader got late would leave its rebuilt vehicles wrong; reliability and the step's
+// counts must deliver every one before the step is taken.
+TEST(Faults, ATenthOfTheDataMessagesLostChangesNothingWhenReadersCarryMesoStatesForward) {
+  const std::string lossy =
+      run_and_export(fresh_dir("lossy-carried"), "ENTOURAGE_FAULT_DROP_PERCENT=10 ", kDomainLossyCarried,
+                     " --meso-states carried");
+  const std::string clean = run_and_export(fresh_dir("clean-every"), "", kDomainCleanCarried);
+  for (const char* file : {"vehicles.csv", "ego.csv", "handoffs.csv"}) {
+    const std::string a = file_bytes(lossy + file);
+    const std::string b = file_bytes(clean + file);
+    EXPECT_GT(b.size(), 100U) << file;
+    EXPECT_TRUE(a == b) << file << " differs between the lossy run with carried states and the clean run";
   }
 }
 
