@@ -143,14 +143,14 @@ Bucket Inbox::take(Step step) {
   return b;
 }
 
-std::uint64_t Inbox::carrying_gaps() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return carrying_gaps_;
-}
-
 void Inbox::carry_forward_locked(Step step, Bucket& b) {
   for (const msg::StepDone& d : b.done) {
-    if (!d.carried_states() || !road_) continue;
+    if (!d.carried_states()) continue;
+    if (!road_) {  // a shell always sets it (Shell)
+      spdlog::error("{} carries its vehicle states forward and this inbox cannot rebuild them: they are missing",
+                    to_string(ServiceId::from_code(d.service())));
+      continue;
+    }
     Carried& c = carried_.try_emplace(d.service(), step_s_).first->second;
     if (c.last && step != *c.last + 1) {
       ++carrying_gaps_;

@@ -73,8 +73,6 @@ class Inbox {
   // Removes and returns what arrived for `step`; with carry_states, a publisher's carried vehicles
   // rebuilt in it. Taken step after step (lockstep): the rebuilding follows a publisher's steps.
   Bucket take(Step step);
-  // Steps taken out of order for a publisher whose states are carried forward (see take).
-  std::uint64_t carrying_gaps() const;
   // Removes and returns every handoff of steps up to and including `step`.
   std::vector<msg::Handoff> take_handoffs_upto(Step step);
   // Removes and returns every director command of steps up to and including `step`.
@@ -119,7 +117,7 @@ class Inbox {
   std::optional<Road> road_;  // with carry_states
   double step_s_ = 0.1;
   std::map<std::uint16_t, Carried> carried_;  // by publisher
-  std::uint64_t carrying_gaps_ = 0;
+  std::uint64_t carrying_gaps_ = 0;           // steps of such a publisher taken out of order (logged)
 };
 
 }  // namespace entourage::dds

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <spdlog/spdlog.h>
@@ -59,18 +60,19 @@ inline StepInput gather_inputs(Step k, Inbox& inbox, const std::vector<ObservedV
 // from their world without a word at its source (a meso vehicle braking at 39 m/s² once became
 // invisible to the generator, which placed the next vehicle on top of it).
 //
-// With `carried_states` it writes only the states a reader cannot carry forward from the last it
-// got (traffic/carried_states.hpp) and tells its readers so in the step report (report_carrying).
+// Given the step length (`carried_step_s`) it writes only the states a reader cannot carry forward
+// from the last it got (traffic/carried_states.hpp), and tells its readers so in the step report
+// (report_carrying).
 class RegionPublisher {
  public:
-  RegionPublisher(Node& node, ServiceId self, const Road& road, const SampleLimits& limits, bool carried_states = false,
-                  double step_s = 0.1)
+  RegionPublisher(Node& node, ServiceId self, const Road& road, const SampleLimits& limits,
+                  std::optional<double> carried_step_s = std::nullopt)
       : self_(self),
         road_(road),
         limits_(limits),
         states_(node.writer<msg::VehicleStatePubSubType>(Topic::kVehicleState)),
         handoffs_(node.writer<msg::HandoffPubSubType>(Topic::kHandoff)) {
-    if (carried_states) sparse_.emplace(step_s);
+    if (carried_step_s) sparse_.emplace(*carried_step_s);
   }
 
   TopicCounts publish(Step k, double time_s, const StepOutput& out) {
@@ -142,7 +144,8 @@ int run_region_service(const ServiceContext& ctx, Core& core, bool carried_state
   const ScenarioConfig& sc = ctx.scenario.config;
   const Road road(sc.road);
   Shell shell(ctx);
-  RegionPublisher publisher(shell.node, ctx.id, road, SampleLimits::of(sc), carried_states, sc.step_s);
+  RegionPublisher publisher(shell.node, ctx.id, road, SampleLimits::of(sc),
+                            carried_states ? std::optional<double>(sc.step_s) : std::nullopt);
   if (!shell.discover(ctx)) return 1;
   run_step_loop(
       ctx, shell.inbox, shell.done, shell.status,

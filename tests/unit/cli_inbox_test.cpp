@@ -11,6 +11,9 @@
 #include "cli/args.hpp"
 #include "dds/inbox.hpp"
 #include "dds/region_shell.hpp"
+#include "dds_test_util.hpp"
+#include "traffic/carried_states.hpp"
+#include "road/road.hpp"
 
 namespace entourage {
 namespace {
@@ -129,6 +132,43 @@ TEST(Inbox, AStepIsCompleteWhenEverythingAnnouncedHasArrived) {
   EXPECT_TRUE(in.complete(3, mask));
   EXPECT_EQ(in.take(3).vehicles.size(), 2U);
   EXPECT_TRUE(in.take(3).vehicles.empty());  // taken once
+}
+
+// A publisher that carries its states forward (traffic/carried_states.hpp): the inbox rebuilds, when
+// it takes a step, every state the publisher did not write, and drops the vehicles it has no more.
+TEST(Inbox, TheStatesAPublisherCarriesForwardAreRebuiltStepByStep) {
+  const double dt = 0.1;
+  const Road road(dds::testing::road_config());
+  dds::Inbox in({kEgo, kMicro, kMeso}, kMicro, limits());
+  in.carry_states(dds::testing::road_config(), dt);
+  Vehicle v;
+  v.id = 5;
+  v.s_m = 1000.0;
+  v.speed_mps = 20.0;
+  v.accel_mps2 = 1.0;
+  const auto carried_report = [](Step step, std::uint32_t written, std::vector<std::uint32_t> gone) {
+    dds::TopicCounts counts{};
+    counts[static_cast<std::size_t>(dds::Topic::kVehicleState)] = written;
+    msg::StepDone d = dds::make_step_done(kMeso, step, counts, 1);
+    d.carried_states(true);
+    d.gone(std::move(gone));
+    return d;
+  };
+  const VehicleReport first(v, Region::kOuterFront);
+  in.add(dds::to_msg(first, kMeso, 0, 0.0, road));
+  in.add(carried_report(0, 1, {}));
+  ASSERT_EQ(in.take(0).vehicles.size(), 1U);
+  VehicleReport expected = first;
+  for (Step k = 1; k <= 3; ++k) {  // nothing written: carried forward
+    in.add(carried_report(k, 0, {}));
+    expected = carried_forward(expected, dt);
+    const dds::Bucket b = in.take(k);
+    ASSERT_EQ(b.vehicles.size(), 1U) << k;
+    EXPECT_EQ(b.vehicles.front(), dds::to_msg(expected, kMeso, k, static_cast<double>(k) * dt, road)) << k;
+  }
+  EXPECT_DOUBLE_EQ(expected.speed_mps, 20.3);
+  in.add(carried_report(4, 0, {5}));  // gone
+  EXPECT_TRUE(in.take(4).vehicles.empty());
 }
 
 TEST(Inbox, OwnSamplesAreIgnored) {
