@@ -46,7 +46,7 @@ struct RunOptions {
   int domain = 0;
   bool external_ego = false;
   std::string meso = "single";
-  std::string meso_states = "every";
+  std::string meso_states = "auto";
   bool quiet = false;
   double discovery_timeout_s = 60.0;
   std::string bin_dir;
@@ -324,8 +324,9 @@ int Run::execute() {
 
   std::cout << "entourage: " << sc_.config.name << " (" << opt_.scenario << "), seed " << seed_ << ", "
             << (opt_.realtime ? "real time" : "lockstep") << ", " << steps_ << " steps of " << sc_.config.step_s
-            << " s, DDS domain " << opt_.domain << "\n  services: " << join(services_, ", ") << "\n  logs: " << logs_dir_
-            << "/\n";
+            << " s, DDS domain " << opt_.domain << "\n  services: " << join(services_, ", ")
+            << (opt_.meso_states == "carried" ? " (meso writes only the states its readers cannot carry forward)" : "")
+            << "\n  logs: " << logs_dir_ << "/\n";
   if (!spawn()) {
     stop_all();
     return 1;
@@ -371,9 +372,11 @@ int run_command(int argc, char** argv) {
   args.flag("external-ego", "do not start the ego stand-in: a simulator publishes the ego state", &opt.external_ego);
   args.option("meso", "single|split", "one meso process for both outer regions, or one per region (default single)",
               &opt.meso);
-  args.option("meso-states", "every|carried",
+  args.option("meso-states", "auto|every|carried",
               "meso publishes every vehicle state at every step, or only those a reader cannot carry forward from "
-              "the last it got, the readers carrying the others forward (lockstep only; default every)",
+              "the last it got, the readers carrying the others forward (lockstep only); auto, the default: carried "
+              "in lockstep with the ego stand-in, every in real time or with an external ego (a simulator reading "
+              "the vehicle states itself)",
               &opt.meso_states);
   args.option("discovery-timeout", "SECONDS", "give up waiting for the services after this (default 60)",
               &opt.discovery_timeout_s);
@@ -388,8 +391,8 @@ int run_command(int argc, char** argv) {
     std::cerr << "entourage run: --meso must be single or split\n";
     return 2;
   }
-  if (opt.meso_states != "every" && opt.meso_states != "carried") {
-    std::cerr << "entourage run: --meso-states must be every or carried\n";
+  if (opt.meso_states != "auto" && opt.meso_states != "every" && opt.meso_states != "carried") {
+    std::cerr << "entourage run: --meso-states must be auto, every or carried\n";
     return 2;
   }
   if (opt.meso_states == "carried" && opt.realtime) {
@@ -397,6 +400,7 @@ int run_command(int argc, char** argv) {
                  "and could not carry its states forward\n";
     return 2;
   }
+  if (opt.meso_states == "auto") opt.meso_states = opt.realtime || opt.external_ego ? "every" : "carried";
   if (opt.domain < 0 || opt.domain > 232) {
     std::cerr << "entourage run: --domain must be in 0-232\n";
     return 2;
