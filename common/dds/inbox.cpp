@@ -129,8 +129,7 @@ std::uint64_t Inbox::bad_samples() const {
 
 void Inbox::carry_states(const RoadConfig& road, double step_s) {
   std::lock_guard<std::mutex> lock(mutex_);
-  road_.emplace(road);
-  step_s_ = step_s;
+  carrying_.emplace(Carrying{Road(road), step_s});
 }
 
 Bucket Inbox::take(Step step) {
@@ -146,12 +145,12 @@ Bucket Inbox::take(Step step) {
 void Inbox::carry_forward_locked(Step step, Bucket& b) {
   for (const msg::StepDone& d : b.done) {
     if (!d.carried_states()) continue;
-    if (!road_) {  // a shell always sets it (Shell)
+    if (!carrying_) {  // a shell always sets it (Shell)
       spdlog::error("{} carries its vehicle states forward and this inbox cannot rebuild them: they are missing",
                     to_string(ServiceId::from_code(d.service())));
       continue;
     }
-    Carried& c = carried_.try_emplace(d.service(), step_s_).first->second;
+    Carried& c = carried_.try_emplace(d.service(), carrying_->step_s).first->second;
     if (c.last && step != *c.last + 1) {
       ++carrying_gaps_;
       spdlog::error("step {} of {} taken after step {}: its carried vehicle states are off until it publishes them "
@@ -167,10 +166,11 @@ void Inbox::carry_forward_locked(Step step, Bucket& b) {
     b.vehicles.erase(std::remove_if(b.vehicles.begin(), b.vehicles.end(), theirs), b.vehicles.end());
     std::sort(published.begin(), published.end(),
               [](const VehicleReport& x, const VehicleReport& y) { return x.id < y.id; });
-    const std::vector<VehicleId> gone(d.gone().begin(), d.gone().end());
     const ServiceId from = ServiceId::from_code(d.service());
-    const double time_s = static_cast<double>(step) * step_s_;  // as the publisher stamps its states
-    for (const VehicleReport& r : c.tracks.step(published, gone)) b.vehicles.push_back(to_msg(r, from, step, time_s, *road_));
+    const double time_s = static_cast<double>(step) * carrying_->step_s;  // as the publisher stamps its states
+    for (const VehicleReport& r : c.tracks.step(published, d.gone())) {
+      b.vehicles.push_back(to_msg(r, from, step, time_s, carrying_->road));
+    }
   }
 }
 

@@ -98,6 +98,10 @@ class Inbox {
   // states at `step` (lock held).
   void carry_forward_locked(Step step, Bucket& b);
 
+  struct Carrying {  // the road and step length states are rebuilt on (carry_states)
+    Road road;
+    double step_s;
+  };
   struct Carried {
     explicit Carried(double step_s) : tracks(step_s) {}
     StateTracks tracks;
@@ -114,8 +118,7 @@ class Inbox {
   std::map<Step, Bucket> buckets_;
   std::map<std::uint16_t, msg::ServiceStatus> statuses_;
   std::uint64_t bad_samples_ = 0;
-  std::optional<Road> road_;  // with carry_states
-  double step_s_ = 0.1;
+  std::optional<Carrying> carrying_;          // with carry_states
   std::map<std::uint16_t, Carried> carried_;  // by publisher
   std::uint64_t carrying_gaps_ = 0;           // steps of such a publisher taken out of order (logged)
 };

@@ -116,7 +116,7 @@ class RegionPublisher {
   // Completes the step report: whether the states are carried forward, and the vehicles gone.
   void report_carrying(msg::StepDone& report) const {
     report.carried_states(sparse_.has_value());
-    if (sparse_) report.gone(std::vector<uint32_t>(gone_.begin(), gone_.end()));
+    if (sparse_) report.gone(gone_);
   }
 
   const std::vector<ObservedVehicle>& own() const { return own_; }

@@ -28,7 +28,7 @@ VehicleReport carried_forward(const VehicleReport& r, double dt_s) {
   VehicleReport next = r;
   advance_on_ramp(next.s_m, next.speed_mps, next.accel_mps2, next.direction, dt_s);
   continue_lane_change(next.lane_change, next.lane, dt_s);
-  next.target_lane = next.lane_change.moving() ? next.lane_change.to_lane : next.lane;
+  next.target_lane = target_lane_of(next.lane_change, next.lane);
   next.lateral_fraction = next.lane_change.lateral_fraction();
   next.indicator = indicator_of(next.lane_change, next.control, next.control_indicator);
   return next;

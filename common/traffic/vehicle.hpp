@@ -54,6 +54,9 @@ struct LaneChangeState {
   double moving_left_s() const;
 };
 
+// The second lane a vehicle in `lane` occupies: the one it moves into while it moves sideways.
+inline int target_lane_of(const LaneChangeState& lc, int lane) { return lc.moving() ? lc.to_lane : lane; }
+
 enum class Indicator : std::uint8_t { kOff = 0, kLeft = 1, kRight = 2 };
 
 // An overtaking on a two-lane road (behaviour/overtaking.hpp, traffic/overtaking_manoeuvre.hpp).
@@ -102,7 +105,7 @@ struct Vehicle {
   double progress_m() const { return sign(direction) * s_m; }
   // The second lane it occupies while moving sideways (equal to `lane` otherwise). Published as
   // target_lane: a vehicle is in both `lane` and `target_lane`.
-  int target_lane() const { return lane_change.moving() ? lane_change.to_lane : lane; }
+  int target_lane() const { return target_lane_of(lane_change, lane); }
   Indicator indicator() const;
 };
 

@@ -57,17 +57,19 @@ void print_flow(const char* what, const recording::FlowMeasurement& f, std::ostr
 void print_service_cpu(const std::vector<ServiceCpu>& cpu, const std::map<std::string, std::uint64_t>& written,
                        const recording::Tables& tables, std::uint64_t steps, std::ostream& out) {
   if (cpu.empty() || steps == 0) return;
-  std::map<std::string, std::uint64_t> rows_by_owner = written;
-  if (rows_by_owner.empty()) {
-    for (const auto& v : tables.vehicles) ++rows_by_owner[v.owner];
+  std::map<std::string, std::uint64_t> states_by_service = written;
+  if (states_by_service.empty()) {
+    for (const auto& v : tables.vehicles) ++states_by_service[v.owner];
   }
   const auto per_step = [steps](double total) { return total / static_cast<double>(steps); };
   out << "  CPU per step while driving (each service's process, all its threads; vehicle states it wrote per step):";
   const char* separator = " ";
   for (const ServiceCpu& c : cpu) {
     out << separator << c.service << ' ' << f1(1e6 * per_step(c.cpu_s)) << " us";
-    const auto rows = rows_by_owner.find(c.service);
-    if (rows != rows_by_owner.end() && rows->second > 0) out << " (" << f1(per_step(static_cast<double>(rows->second))) << ")";
+    const auto states = states_by_service.find(c.service);
+    if (states != states_by_service.end() && states->second > 0) {
+      out << " (" << f1(per_step(static_cast<double>(states->second))) << ")";
+    }
     separator = ", ";
   }
   out << "\n";
