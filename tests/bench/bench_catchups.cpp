@@ -43,6 +43,7 @@
 #include "scenario/loader.hpp"
 #include "traffic/observed_stream.hpp"
 #include "traffic/road_sim.hpp"
+#include "ordered_pool.hpp"
 #include "window_catchups.hpp"
 #include "window_cores.hpp"
 
@@ -69,6 +70,7 @@ struct Options {
   int drives = 0;
   double drive_s = 1800.0;
   double probe_kph = -1.0;  // > 0: the window drives' ego is a transparent probe at this speed
+  int jobs = 0;             // window drives on this many threads at once (0: one per logical CPU)
 };
 
 struct Observer {
@@ -300,6 +302,7 @@ int check_options(const Options& o) {
   }
   if (!(o.warmup_s >= 0.0) || !(o.duration_s > 0.0)) return bad("--warmup must be >= 0 and --duration > 0 seconds");
   if (o.ego_every < 1) return bad("--ego-every must be >= 1");
+  if (o.jobs < 0 || o.jobs > 1024) return bad("--jobs must be from 0 (one per logical CPU) to 1024");
   if (o.drives < 0 || !(o.drive_s > 0.0)) return bad("--drives must be >= 0 and --drive-duration > 0 seconds");
   if (o.probe_kph != -1.0 && !(o.probe_kph > 0.0 && o.probe_kph <= 250.0)) {
     return bad("--probe-kph must be in (0, 250] km/h");
@@ -326,6 +329,8 @@ int main(int argc, char** argv) {
   args.option("seed", "N", "whole road: seed (default 1)", &o.seed);
   args.option("ego-every", "N", "whole road: every N-th car drives like the ego stand-in (default 20)", &o.ego_every);
   args.option("drives", "N", "window drives, seeds 1..N (default 0)", &o.drives);
+  args.option("jobs", "N", "window drives on N threads at once (default 0: one per logical CPU); the output is the "
+              "same", &o.jobs);
   args.option("drive-duration", "S", "simulated time of each window drive (default 1800)", &o.drive_s);
   args.option("probe-kph", "KPH", "the window drives' ego is a transparent probe (scenario ego.transparent) at this "
               "speed, and the whole road carries transparent probes at it instead of the ego stand-in's drivers "
@@ -391,14 +396,20 @@ int main(int argc, char** argv) {
   }
 
   Pooled window;
-  for (int d = 1; d <= o.drives; ++d) {
-    const Tally t = window_drive(drive_sc, static_cast<std::uint64_t>(d), o.drive_s);
+  std::vector<Tally> tallies(static_cast<std::size_t>(o.drives));
+  const auto drive = [&](std::size_t i) {
+    tallies[i] = window_drive(drive_sc, static_cast<std::uint64_t>(i + 1), o.drive_s);
+  };
+  const auto take = [&](std::size_t i) {
+    const int d = static_cast<int>(i) + 1;
+    const Tally& t = tallies[i];
     window.add(t);
     std::printf("  window drive, seed %3d: %5.1f km at %5.1f km/h, passive %4.0f of %6.1f, active %4.0f of %6.1f\n", d,
                 t.distance_m / 1000.0, mps_to_kph(t.distance_m / std::max(1.0, t.observed_s)), t.passive,
                 t.predicted_passive, t.active, t.predicted_active);
     std::fflush(stdout);
-  }
+  };
+  bench::run_in_order(tallies.size(), bench::pool_threads(o.jobs, tallies.size()), drive, take);
   print_ego(o.probe_kph > 0.0 ? "the probe's window drives" : "the ego stand-in's window drives", window, sc, stream);
   const ObservedStream oncoming(sc, Direction::kBackward, StreamObservation{},
                                 observation_seed(generator_seed(static_cast<std::uint64_t>(o.seed)), Direction::kBackward));

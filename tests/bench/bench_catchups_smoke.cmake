@@ -1,14 +1,27 @@
-# Smoke test of entourage-bench-catchups (ctest bench_catchups_smoke): a short whole road and one
-# short window drive exit 0 and print both sets of figures; so do transparent probes on a short whole
-# road and one drive of one; a bad option exits 2. No figure is checked.
+# Smoke test of entourage-bench-catchups (ctest bench_catchups_smoke): a short whole road and two
+# short window drives exit 0 and print both sets of figures, the same byte for byte with the drives
+# on one thread and on two (--jobs); so do transparent probes on a short whole road and one drive of
+# one; a bad option exits 2. No figure is checked.
 # Usage: cmake -DBENCH=<path to entourage-bench-catchups> -DSCENARIO=<scenario file> -P bench_catchups_smoke.cmake
 execute_process(COMMAND ${BENCH} --scenario ${SCENARIO} --length 12000 --margin 2000 --warmup 400 --duration 120
-                        --ego-every 5 --drives 1 --drive-duration 60
+                        --ego-every 5 --drives 2 --drive-duration 60 --jobs 1
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "entourage-bench-catchups exited ${rc}:\n${out}\n${err}")
 endif()
+execute_process(COMMAND ${BENCH} --scenario ${SCENARIO} --length 12000 --margin 2000 --warmup 400 --duration 120
+                        --ego-every 5 --drives 2 --drive-duration 60 --jobs 2
+                RESULT_VARIABLE rc OUTPUT_VARIABLE threaded ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out STREQUAL threaded)
+  message(FATAL_ERROR "entourage-bench-catchups --jobs 2 exited ${rc} or printed another output than one thread:\n"
+                      "${out}\n---\n${threaded}\n${err}")
+endif()
+execute_process(COMMAND ${BENCH} --jobs -1 RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "--jobs")
+  message(FATAL_ERROR "entourage-bench-catchups --jobs -1 exited ${rc} (expected 2 and a message):\n${err}")
+endif()
 foreach(expected "whole road: " "the ego stand-in's drivers on the whole road: " "window drive, seed   1"
+                 "window drive, seed   2"
                  "the ego stand-in's window drives: " "catch-ups against the moving-observer prediction: passive "
                  "at the rear edge: in " "their space-mean speed: " "flow of its direction in the window: "
                  "window against the whole road: ")

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "cli/args.hpp"
+#include "ordered_pool.hpp"
 #include "paired_runs.hpp"
 #include "play_runs.hpp"
 #include "scenario/loader.hpp"
@@ -245,6 +247,50 @@ void print_paired(const std::string& path, const std::map<std::uint64_t, bool>& 
               path.c_str(), p.gained, p.lost, p.both_done, p.both_failed, p.unpaired, bench::flips_p_value(p.gained, p.lost));
 }
 
+// One run of a play: its result, the ego's driver, and its trace (--trace, --trace-traffic) as
+// text, so that runs on several threads print it in run order.
+struct RunOutcome {
+  bench::PlayRunResult result;
+  bench::EgoVariant variant{};
+  std::string trace;
+};
+
+RunOutcome run_once(const ScenarioConfig& config, int index, std::uint64_t first_seed, bool plain, bool trace,
+                    bool trace_traffic) {
+  RunOutcome o;
+  const std::uint64_t s = first_seed + static_cast<std::uint64_t>(index);
+  const ScenarioConfig sc = plain ? config : bench::vary_ego(config, index, s, &o.variant);
+  char* text = nullptr;
+  std::size_t size = 0;
+  std::FILE* out = (trace || trace_traffic) ? open_memstream(&text, &size) : nullptr;
+  o.result = bench::run_play(sc, s, trace ? out : nullptr, trace_traffic ? out : nullptr);
+  if (out != nullptr) {
+    std::fclose(out);
+    o.trace.assign(text, size);
+    std::free(text);
+  }
+  const bench::TriggerTimes undirected = bench::trigger_times_undirected(sc, s);
+  bench::PlayRunResult& r = o.result;
+  if (r.trigger2_time_s >= 0.0 && undirected.trigger2_s >= 0.0) {
+    r.held_up_s = (r.trigger2_time_s - r.trigger1_time_s) - (undirected.trigger2_s - undirected.trigger1_s);
+  }
+  r.traffic_speed_undirected_mps = undirected.traffic_speed_mps;
+  r.passed_on_right_undirected = undirected.passed_on_right;
+  return o;
+}
+
+void print_run_line(int index, std::uint64_t seed, const RunOutcome& o) {
+  const bench::PlayRunResult& r = o.result;
+  std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s waited %4.1f s created %d "
+              "overlaps %d/%d held up %4.1f s beside %4.1f s traffic %4.2f right %d/%d actors' decel %3.1f m/s2 "
+              "ego lane changes %d%s  %s\n",
+              index, static_cast<unsigned long long>(seed), bench::to_string(o.variant),
+              director::to_string(r.final_phase), r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s,
+              r.handover_wait_s, r.created, r.overlaps_with_actor, r.overlaps_other, r.held_up_s, r.actor_beside_ego_s,
+              r.traffic_slowed_to(), r.passed_on_right.total(), r.passed_on_right_undirected.total(),
+              r.actors.max_decel_mps2, r.ego_lane_changes, r.mirrored_at_trigger2 ? " mirrored" : "", r.failure.c_str());
+}
+
 int run(int argc, char** argv) {
   std::string scenario_path;
   int runs = 50;
@@ -254,6 +300,7 @@ int run(int argc, char** argv) {
   bool plain = false;
   bool trace = false;
   bool trace_traffic = false;
+  int jobs = 0;
   cli::Args args("entourage-bench-director",
                  "Runs each shipped play many times in lockstep (every core in one process) with varied ego drivers "
                  "and traffic seeds, and prints success, handover errors, the actors' driving against the "
@@ -262,6 +309,7 @@ int run(int argc, char** argv) {
   args.option("runs", "N", "runs per play (default 50)", &runs);
   args.option("seed", "N", "first traffic seed; run i uses seed + i (default 1)", &seed);
   args.option("first", "I", "index of the first run (default 0): runs I .. I+N-1, to repeat one run of a longer bench", &first);
+  args.option("jobs", "N", "runs on N threads at once (default 0: one per logical CPU); the output is the same", &jobs);
   args.flag("verbose", "one line per run as well", &verbose);
   args.flag("trace", "every play report of every run as well (to stderr)", &trace);
   args.flag("trace-traffic", "the vehicles around the ego every 2 s of every play as well (to stderr)", &trace_traffic);
@@ -274,6 +322,10 @@ int run(int argc, char** argv) {
   if (const auto rc = args.parse_or_exit(argc, argv)) return *rc;
   if (runs < 1 || runs > 100000) {
     std::cerr << "entourage-bench-director: --runs wants a number from 1 to 100000\n";
+    return 2;
+  }
+  if (jobs < 0 || jobs > 1024) {
+    std::cerr << "entourage-bench-director: --jobs wants a number from 0 (one per logical CPU) to 1024\n";
     return 2;
   }
   if (first < 0 || first > 100000) {
@@ -317,33 +369,25 @@ int run(int argc, char** argv) {
       std::cerr << "entourage-bench-director: " << path << " has no play\n";
       return 2;
     }
+    const std::size_t n = static_cast<std::size_t>(runs);
+    std::vector<RunOutcome> outcomes(n);
     std::vector<bench::PlayRunResult> results;
     std::vector<bench::EgoVariant> variants;
-    for (int i = first; i < first + runs; ++i) {
-      const std::uint64_t s = seed + static_cast<std::uint64_t>(i);
-      bench::EgoVariant v{};
-      const ScenarioConfig sc = plain ? loaded.config : bench::vary_ego(loaded.config, i, s, &v);
-      results.push_back(bench::run_play(sc, s, trace ? stderr : nullptr, trace_traffic ? stderr : nullptr));
-      const bench::TriggerTimes undirected = bench::trigger_times_undirected(sc, s);
-      bench::PlayRunResult& last = results.back();
-      if (last.trigger2_time_s >= 0.0 && undirected.trigger2_s >= 0.0) {
-        last.held_up_s = (last.trigger2_time_s - last.trigger1_time_s) - (undirected.trigger2_s - undirected.trigger1_s);
-      }
-      last.traffic_speed_undirected_mps = undirected.traffic_speed_mps;
-      last.passed_on_right_undirected = undirected.passed_on_right;
-      variants.push_back(v);
-      if (verbose) {
-        const bench::PlayRunResult& r = results.back();
-        std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s waited %4.1f s created %d "
-                    "overlaps %d/%d held up %4.1f s beside %4.1f s traffic %4.2f right %d/%d actors' decel %3.1f m/s2 "
-                    "ego lane changes %d%s  %s\n",
-                    i, static_cast<unsigned long long>(s), bench::to_string(v), director::to_string(r.final_phase),
-                    r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s, r.handover_wait_s, r.created,
-                    r.overlaps_with_actor, r.overlaps_other, r.held_up_s, r.actor_beside_ego_s, r.traffic_slowed_to(),
-                    r.passed_on_right.total(), r.passed_on_right_undirected.total(), r.actors.max_decel_mps2,
-                    r.ego_lane_changes, r.mirrored_at_trigger2 ? " mirrored" : "", r.failure.c_str());
-      }
-    }
+    const bool traced = trace || trace_traffic;
+    bench::run_in_order(
+        n, bench::pool_threads(jobs, n),
+        [&](std::size_t k) {
+          outcomes[k] = run_once(loaded.config, first + static_cast<int>(k), seed, plain, trace, trace_traffic);
+        },
+        [&](std::size_t k) {
+          RunOutcome& o = outcomes[k];
+          if (traced) std::fputs(o.trace.c_str(), stderr);
+          if (verbose) print_run_line(first + static_cast<int>(k), seed + static_cast<std::uint64_t>(first) + k, o);
+          std::fflush(stdout);
+          results.push_back(std::move(o.result));
+          variants.push_back(o.variant);
+          o = RunOutcome{};
+        });
     print_play(loaded.config.plays.front().name + " (" + loaded.config.name + ")", results, variants);
     if (!paired_path.empty()) print_paired(paired_path, paired_before, results, seed + static_cast<std::uint64_t>(first));
   }

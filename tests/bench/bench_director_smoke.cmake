@@ -1,21 +1,40 @@
-# Smoke test of entourage-bench-director's paired comparison (ctest bench_director_smoke): one run
-# of a play written with --verbose, then the same run paired with that output: the bench is
-# deterministic, so nothing is gained or lost and McNemar's p is 1. Bad --paired uses exit 2.
+# Smoke test of entourage-bench-director (ctest bench_director_smoke): two runs of a play written
+# with --verbose on one thread, the same two on two threads (--jobs 2: the output is the same, byte
+# for byte), then the same runs paired with the first output: the bench is deterministic, so
+# nothing is gained or lost and McNemar's p is 1. Bad --paired and --jobs exit 2.
 # Usage: cmake -DBENCH=<path to entourage-bench-director> -DSCENARIO=<scenario with a play>
 #              -DWORK=<scratch directory> -P bench_director_smoke.cmake
 file(MAKE_DIRECTORY ${WORK})
 set(before ${WORK}/bench_director_smoke_before.txt)
-execute_process(COMMAND ${BENCH} --scenario ${SCENARIO} --runs 1 --first 3 --verbose
+set(threaded ${WORK}/bench_director_smoke_threaded.txt)
+execute_process(COMMAND ${BENCH} --scenario ${SCENARIO} --runs 2 --first 3 --verbose --jobs 1
                 RESULT_VARIABLE rc OUTPUT_FILE ${before} ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "entourage-bench-director --verbose exited ${rc}:\n${err}")
 endif()
-execute_process(COMMAND ${BENCH} --scenario ${SCENARIO} --runs 1 --first 3 --paired ${before}
+execute_process(COMMAND ${BENCH} --scenario ${SCENARIO} --runs 2 --first 3 --verbose --jobs 2
+                RESULT_VARIABLE rc OUTPUT_FILE ${threaded} ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "entourage-bench-director --jobs 2 exited ${rc}:\n${err}")
+endif()
+file(READ ${before} one_thread)
+file(READ ${threaded} two_threads)
+if(NOT one_thread STREQUAL two_threads)
+  message(FATAL_ERROR "two threads printed another output than one:\n${one_thread}\n---\n${two_threads}")
+endif()
+if(NOT one_thread MATCHES "run 3 seed 4 [^\n]*\nrun 4 seed 5 ")
+  message(FATAL_ERROR "the two runs' lines are missing or out of order:\n${one_thread}")
+endif()
+execute_process(COMMAND ${BENCH} --scenario ${SCENARIO} --runs 1 --jobs -1 RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "--jobs wants a number")
+  message(FATAL_ERROR "--jobs -1 exited ${rc} (expected 2 and a message):\n${err}")
+endif()
+execute_process(COMMAND ${BENCH} --scenario ${SCENARIO} --runs 2 --first 3 --jobs 2 --paired ${before}
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "entourage-bench-director --paired exited ${rc}:\n${out}\n${err}")
 endif()
-if(NOT out MATCHES "paired with [^\n]*: gained 0, lost 0 \\(both done [01], both failed [01], not in it 0\\); McNemar's p = 1.000")
+if(NOT out MATCHES "paired with [^\n]*: gained 0, lost 0 \\(both done [012], both failed [012], not in it 0\\); McNemar's p = 1.000")
   message(FATAL_ERROR "the same run paired with itself flipped, or was not paired:\n${out}")
 endif()
 execute_process(COMMAND ${BENCH} --runs 1 --paired ${before} RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
