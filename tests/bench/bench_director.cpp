@@ -250,6 +250,7 @@ void print_paired(const std::string& path, const std::map<std::uint64_t, bool>& 
 // One run of a play: its result, the ego's driver, and its trace (--trace, --trace-traffic) as
 // text, so that runs on several threads print it in run order.
 struct RunOutcome {
+  std::uint64_t seed = 0;
   bench::PlayRunResult result;
   bench::EgoVariant variant{};
   std::string trace;
@@ -258,7 +259,8 @@ struct RunOutcome {
 RunOutcome run_once(const ScenarioConfig& config, int index, std::uint64_t first_seed, bool plain, bool trace,
                     bool trace_traffic) {
   RunOutcome o;
-  const std::uint64_t s = first_seed + static_cast<std::uint64_t>(index);
+  o.seed = first_seed + static_cast<std::uint64_t>(index);
+  const std::uint64_t s = o.seed;
   const ScenarioConfig sc = plain ? config : bench::vary_ego(config, index, s, &o.variant);
   char* text = nullptr;
   std::size_t size = 0;
@@ -279,12 +281,12 @@ RunOutcome run_once(const ScenarioConfig& config, int index, std::uint64_t first
   return o;
 }
 
-void print_run_line(int index, std::uint64_t seed, const RunOutcome& o) {
+void print_run_line(int index, const RunOutcome& o) {
   const bench::PlayRunResult& r = o.result;
   std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s waited %4.1f s created %d "
               "overlaps %d/%d held up %4.1f s beside %4.1f s traffic %4.2f right %d/%d actors' decel %3.1f m/s2 "
               "ego lane changes %d%s  %s\n",
-              index, static_cast<unsigned long long>(seed), bench::to_string(o.variant),
+              index, static_cast<unsigned long long>(o.seed), bench::to_string(o.variant),
               director::to_string(r.final_phase), r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s,
               r.handover_wait_s, r.created, r.overlaps_with_actor, r.overlaps_other, r.held_up_s, r.actor_beside_ego_s,
               r.traffic_slowed_to(), r.passed_on_right.total(), r.passed_on_right_undirected.total(),
@@ -373,7 +375,6 @@ int run(int argc, char** argv) {
     std::vector<RunOutcome> outcomes(n);
     std::vector<bench::PlayRunResult> results;
     std::vector<bench::EgoVariant> variants;
-    const bool traced = trace || trace_traffic;
     bench::run_in_order(
         n, bench::pool_threads(jobs, n),
         [&](std::size_t k) {
@@ -381,8 +382,8 @@ int run(int argc, char** argv) {
         },
         [&](std::size_t k) {
           RunOutcome& o = outcomes[k];
-          if (traced) std::fputs(o.trace.c_str(), stderr);
-          if (verbose) print_run_line(first + static_cast<int>(k), seed + static_cast<std::uint64_t>(first) + k, o);
+          std::fwrite(o.trace.data(), 1, o.trace.size(), stderr);  // empty unless traced
+          if (verbose) print_run_line(first + static_cast<int>(k), o);
           std::fflush(stdout);
           results.push_back(std::move(o.result));
           variants.push_back(o.variant);
