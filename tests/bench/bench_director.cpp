@@ -12,6 +12,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -256,17 +257,25 @@ struct RunOutcome {
   std::string trace;
 };
 
+// `live`: where the trace goes as the run makes it (one thread); null: into the outcome, printed
+// when its turn comes (several threads).
 RunOutcome run_once(const ScenarioConfig& config, int index, std::uint64_t first_seed, bool plain, bool trace,
-                    bool trace_traffic) {
+                    bool trace_traffic, std::FILE* live) {
   RunOutcome o;
   o.seed = first_seed + static_cast<std::uint64_t>(index);
   const std::uint64_t s = o.seed;
   const ScenarioConfig sc = plain ? config : bench::vary_ego(config, index, s, &o.variant);
   char* text = nullptr;
   std::size_t size = 0;
-  std::FILE* out = (trace || trace_traffic) ? open_memstream(&text, &size) : nullptr;
+  std::FILE* out = nullptr;
+  if ((trace || trace_traffic) && live != nullptr) {
+    out = live;
+  } else if (trace || trace_traffic) {
+    out = open_memstream(&text, &size);
+    if (out == nullptr) throw std::runtime_error("cannot buffer the trace of run " + std::to_string(index));
+  }
   o.result = bench::run_play(sc, s, trace ? out : nullptr, trace_traffic ? out : nullptr);
-  if (out != nullptr) {
+  if (out != nullptr && out != live) {
     std::fclose(out);
     o.trace.assign(text, size);
     std::free(text);
@@ -375,10 +384,12 @@ int run(int argc, char** argv) {
     std::vector<RunOutcome> outcomes(n);
     std::vector<bench::PlayRunResult> results;
     std::vector<bench::EgoVariant> variants;
+    const int threads = bench::pool_threads(jobs, n);
+    std::FILE* live = threads == 1 ? stderr : nullptr;  // one thread: the trace as it comes
     bench::run_in_order(
-        n, bench::pool_threads(jobs, n),
+        n, threads,
         [&](std::size_t k) {
-          outcomes[k] = run_once(loaded.config, first + static_cast<int>(k), seed, plain, trace, trace_traffic);
+          outcomes[k] = run_once(loaded.config, first + static_cast<int>(k), seed, plain, trace, trace_traffic, live);
         },
         [&](std::size_t k) {
           RunOutcome& o = outcomes[k];
@@ -398,4 +409,11 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace entourage
 
-int main(int argc, char** argv) { return entourage::run(argc, argv); }
+int main(int argc, char** argv) {
+  try {
+    return entourage::run(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "entourage-bench-director: " << e.what() << "\n";
+    return 1;
+  }
+}
