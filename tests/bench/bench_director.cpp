@@ -267,11 +267,9 @@ RunOutcome run_once(const ScenarioConfig& config, int index, std::uint64_t first
   const ScenarioConfig sc = plain ? config : bench::vary_ego(config, index, s, &o.variant);
   char* text = nullptr;
   std::size_t size = 0;
-  std::FILE* out = nullptr;
-  if ((trace || trace_traffic) && live != nullptr) {
-    out = live;
-  } else if (trace || trace_traffic) {
-    out = open_memstream(&text, &size);
+  std::FILE* out = nullptr;  // the trace's stream, when traced
+  if (trace || trace_traffic) {
+    out = live != nullptr ? live : open_memstream(&text, &size);
     if (out == nullptr) throw std::runtime_error("cannot buffer the trace of run " + std::to_string(index));
   }
   o.result = bench::run_play(sc, s, trace ? out : nullptr, trace_traffic ? out : nullptr);

@@ -1,26 +1,31 @@
 # Smoke test of entourage-bench-director (ctest bench_director_smoke): two runs of a play written
-# with --verbose on one thread, the same two on two threads (--jobs 2: the output is the same, byte
-# for byte), then the same runs paired with the first output: the bench is deterministic, so
-# nothing is gained or lost and McNemar's p is 1. Bad --paired and --jobs exit 2.
+# with --verbose --trace on one thread, the same two on two threads (--jobs 2: the output and the
+# traces are the same, byte for byte), then the same runs paired with the first output: the bench
+# is deterministic, so nothing is gained or lost and McNemar's p is 1. Bad --paired and --jobs
+# exit 2.
 # Usage: cmake -DBENCH=<path to entourage-bench-director> -DSCENARIO=<scenario with a play>
 #              -DWORK=<scratch directory> -P bench_director_smoke.cmake
 file(MAKE_DIRECTORY ${WORK})
 set(before ${WORK}/bench_director_smoke_before.txt)
 set(threaded ${WORK}/bench_director_smoke_threaded.txt)
-execute_process(COMMAND ${BENCH} --scenario ${SCENARIO} --runs 2 --first 3 --verbose --jobs 1
-                RESULT_VARIABLE rc OUTPUT_FILE ${before} ERROR_VARIABLE err)
+execute_process(COMMAND ${BENCH} --scenario ${SCENARIO} --runs 2 --first 3 --verbose --trace --jobs 1
+                RESULT_VARIABLE rc OUTPUT_FILE ${before} ERROR_VARIABLE trace_one)
 if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "entourage-bench-director --verbose exited ${rc}:\n${err}")
+  message(FATAL_ERROR "entourage-bench-director --verbose exited ${rc}:\n${trace_one}")
 endif()
-execute_process(COMMAND ${BENCH} --scenario ${SCENARIO} --runs 2 --first 3 --verbose --jobs 2
-                RESULT_VARIABLE rc OUTPUT_FILE ${threaded} ERROR_VARIABLE err)
+execute_process(COMMAND ${BENCH} --scenario ${SCENARIO} --runs 2 --first 3 --verbose --trace --jobs 2
+                RESULT_VARIABLE rc OUTPUT_FILE ${threaded} ERROR_VARIABLE trace_two)
 if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "entourage-bench-director --jobs 2 exited ${rc}:\n${err}")
+  message(FATAL_ERROR "entourage-bench-director --jobs 2 exited ${rc}:\n${trace_two}")
 endif()
 file(READ ${before} one_thread)
 file(READ ${threaded} two_threads)
 if(NOT one_thread STREQUAL two_threads)
   message(FATAL_ERROR "two threads printed another output than one:\n${one_thread}\n---\n${two_threads}")
+endif()
+# The traces: written live on one thread, buffered per run on two, the same either way.
+if(NOT trace_one MATCHES "trigger point 1 passed" OR NOT trace_one STREQUAL trace_two)
+  message(FATAL_ERROR "the traces on one thread and on two differ, or are missing:\n${trace_one}\n---\n${trace_two}")
 endif()
 if(NOT one_thread MATCHES "run 3 seed 4 [^\n]*\nrun 4 seed 5 ")
   message(FATAL_ERROR "the two runs' lines are missing or out of order:\n${one_thread}")
