@@ -71,8 +71,8 @@ TEST(Staging, ARoleTheEgoClosesOnDrivesAtItsStartSpeedForTheLastSecondsBeforeThe
   const Waypoint late = way_to(slot, near, play.roles[0], Direction::kForward, 0, lanes, kSettleEarly_s, cfg);
   EXPECT_DOUBLE_EQ(late.time_s, kSettleEarly_s);
   EXPECT_DOUBLE_EQ(late.slot.s_m, slot.s_m);
-  // The ego closing on it by kSettleClosing_mps or less, a slower role behind the ego, and an
-  // oncoming one: the start, by the aim's time.
+  // The ego closing on it by kSettleClosing_mps or less, and a slower role behind the ego: the
+  // start, by the aim's time.
   PlayConfig slow = play;
   slow.roles[0].speed_mps = -kSettleClosing_mps;
   const Slot slow_slot = slots_of(slow, Direction::kForward, 0, aim, lanes)[0];
@@ -82,18 +82,37 @@ TEST(Staging, ARoleTheEgoClosesOnDrivesAtItsStartSpeedForTheLastSecondsBeforeThe
   const Slot behind_slot = slots_of(behind, Direction::kForward, 0, aim, lanes)[0];
   EXPECT_DOUBLE_EQ(way_to(behind_slot, aim, behind.roles[0], Direction::kForward, 0, lanes, 60.0, cfg).slot.s_m,
                    behind_slot.s_m);
-  PlayConfig oncoming = play;
-  oncoming.roles[0].direction = Direction::kBackward;
-  oncoming.roles[0].absolute_speed = true;
-  oncoming.roles[0].speed_mps = 22.0;
   const Lanes rural{1, 1};
-  const Slot oncoming_slot = slots_of(oncoming, Direction::kForward, 0, aim, rural)[0];
-  EXPECT_DOUBLE_EQ(way_to(oncoming_slot, aim, oncoming.roles[0], Direction::kForward, 0, rural, 60.0, cfg).time_s,
-                   60.0);
   // On one lane per direction (the slow truck): the traffic behind it could not pass it in a lane
   // of its own direction, and would queue behind it for those seconds.
   const Slot one_lane_slot = slots_of(play, Direction::kForward, 0, aim, rural)[0];
   EXPECT_DOUBLE_EQ(way_to(one_lane_slot, aim, play.roles[0], Direction::kForward, 0, rural, 60.0, cfg).time_s, 60.0);
+}
+
+TEST(Staging, AnOncomingRoleDrivesAtItsStartSpeedForTheLastSecondsBeforeTheStart) {
+  // An oncoming car at 22 m/s, 200 m ahead of the ego at the start: 60 s before it, its way leads
+  // to where its start is kOncomingSettle_s before the start (22 m/s x 15 s further from the ego,
+  // against the ego's direction), by then.
+  PlayConfig play = lead_play();
+  play.roles[0].direction = Direction::kBackward;
+  play.roles[0].ahead_m = 200.0;
+  play.roles[0].absolute_speed = true;
+  play.roles[0].speed_mps = 22.0;
+  const DirectorConfig cfg;
+  const Lanes rural{1, 1};
+  const Aim aim = at_trigger2(play, 25.0);
+  const Slot slot = slots_of(play, Direction::kForward, 0, aim, rural)[0];
+  ASSERT_EQ(slot.direction, Direction::kBackward);
+  const Waypoint early = way_to(slot, aim, play.roles[0], Direction::kForward, 0, rural, 60.0, cfg);
+  EXPECT_DOUBLE_EQ(early.time_s, 60.0 - kOncomingSettle_s);
+  EXPECT_DOUBLE_EQ(early.slot.s_m, slot.s_m + 22.0 * kOncomingSettle_s);
+  EXPECT_DOUBLE_EQ(early.slot.speed_mps, 22.0);
+  EXPECT_EQ(early.slot.lane, slot.lane);
+  // In the last kOncomingSettle_s: the start itself, by the aim's time.
+  const Aim near{kOncomingSettle_s, 3000.0, 25.0, 0.0};
+  const Waypoint late = way_to(slot, near, play.roles[0], Direction::kForward, 0, rural, kOncomingSettle_s, cfg);
+  EXPECT_DOUBLE_EQ(late.time_s, kOncomingSettle_s);
+  EXPECT_DOUBLE_EQ(late.slot.s_m, slot.s_m);
 }
 
 TEST(Staging, AnEgoOvertakingInTheOncomingLaneKeepsThePlayStagedBesideItsOwnLane) {

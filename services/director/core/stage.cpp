@@ -138,6 +138,9 @@ Waypoint way_to(const Slot& slot, const Aim& aim, const PlayRoleConfig& role, Di
     const double approach_s = cfg.beside_approach_s;
     return on_track_before(slot, time_to_start_s - approach_s, approach_s, cfg.beside_wait_ahead_m);
   }
+  if (role.direction != Direction::kForward && aim.time_s > kOncomingSettle_s) {
+    return on_track_before(slot, aim.time_s - kOncomingSettle_s, kOncomingSettle_s, 0.0);
+  }
   if (aim.time_s > kSettleEarly_s && settles_early(slot, role, ego_direction, aim.ego_speed_mps, lanes)) {
     return on_track_before(slot, aim.time_s - kSettleEarly_s, kSettleEarly_s, 0.0);
   }
