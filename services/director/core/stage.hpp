@@ -130,8 +130,8 @@ std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int 
 // instead, the stopped vehicle lost 19 runs of 200, stop 52).
 //
 // An oncoming role settles early as well, kOncomingSettle_s before the start. The oncoming
-// traffic on a rural road comes in platoons (the generator's composite headways), and an oncoming
-// actor is often cast at the head of one, or in it: planned to change to its start speed just in
+// traffic on a rural road comes in platoons (the generator's observed stream: vehicles held up
+// behind slower ones), and an oncoming actor is often cast at the head of one, or in it: planned to change to its start speed just in
 // time, one that came early waited at the band's low edge and sped up in the last seconds, and the
 // platoon behind it, other oncoming actors among them, lagged its speed-up and met the ego 15-22
 // km/h too slow (slow truck, seed 92: oncoming 1 at 56 km/h 9 s before the start, oncoming 2 and
