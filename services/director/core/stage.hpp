@@ -129,15 +129,15 @@ std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int 
 // actor that misses by far (a better placed one is found; judged by its miss at the start
 // instead, the stopped vehicle lost 19 runs of 200, stop 52).
 //
-// An oncoming role settles early as well, kOncomingSettle_s before the start. The oncoming
-// traffic on a rural road comes in platoons (the generator's observed stream: vehicles held up
-// behind slower ones), and an oncoming actor is often cast at the head of one, or in it: planned to change to its start speed just in
-// time, one that came early waited at the band's low edge and sped up in the last seconds, and the
-// platoon behind it, other oncoming actors among them, lagged its speed-up and met the ego 15-22
-// km/h too slow (slow truck, seed 92: oncoming 1 at 56 km/h 9 s before the start, oncoming 2 and
-// 3, the fourth and the eighth car behind it, at 60 and 63 km/h at the start, where 80 was asked).
-// Settled early, the platoon has those seconds to be back at its speed (services/director/README.md,
-// *Stop 62*).
+// An oncoming role settles early as well, kOncomingSettle_s before the start. The oncoming traffic
+// on a rural road comes in platoons (the generator's observed stream: vehicles held up behind
+// slower ones), and an oncoming actor is often cast at the head of one, or in it: planned to change
+// to its start speed just in time, one that came early waited at the band's low edge and sped up in
+// the last seconds, and the platoon behind it, other oncoming actors among them, lagged its
+// speed-up and met the ego 15-22 km/h too slow (slow truck, seed 92: oncoming 1 at 56 km/h 9 s
+// before the start, oncoming 2 and 3, the fourth and the eighth car behind it, at 60 and 63 km/h at
+// the start, where 80 was asked). Settled early, the platoon has those seconds to be back at its
+// speed (services/director/README.md, *Stop 62*).
 //
 // Other roles, and every role after these times: the slot by the aim's time.
 inline constexpr double kBesideReach_m = 30.0;
