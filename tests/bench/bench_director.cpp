@@ -10,13 +10,13 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "cli/args.hpp"
+#include "failure_kinds.hpp"
 #include "ordered_pool.hpp"
 #include "paired_runs.hpp"
 #include "play_runs.hpp"
@@ -66,54 +66,6 @@ struct ExtremesOverRuns {
   }
 };
 
-// Does a position problem ("truck: -244.2 m from its start position") put an actor of the ego's
-// direction whose start is ahead of the ego behind the ego? (The ego passed it, or it never got
-// past the ego: slow truck and cut-in failures of their own kind.) The error is along the ego's
-// direction, > 0 beyond the start.
-bool behind_the_ego(const std::string& role, const std::string& problem, const PlayConfig& play) {
-  const auto rc = std::find_if(play.roles.begin(), play.roles.end(), [&](const PlayRoleConfig& r) { return r.name == role; });
-  if (rc == play.roles.end() || rc->direction != Direction::kForward || rc->ahead_m <= 0.0) return false;
-  const std::string error = problem.substr(role.size() + 2);
-  return rc->ahead_m + std::strtod(error.c_str(), nullptr) < 0.0;
-}
-
-// The kind of one problem of a start condition ("truck: 12.0 m from its start position" is
-// "truck: position"; one that leaves an actor that should be ahead of the ego behind it, "truck:
-// behind the ego").
-std::string kind_of(const std::string& problem, const PlayConfig& play) {
-  if (problem.find("in a clear zone") != std::string::npos) return "a vehicle in a clear zone";
-  const std::string role = problem.substr(0, problem.find(": "));
-  for (const auto& [text, kind] : {std::pair<const char*, const char*>{"start position", "position"},
-                                   {"start speed", "speed"},
-                                   {"in lane", "lane"},
-                                   {"no actor", "no actor"}}) {
-    if (problem.find(text) == std::string::npos) continue;
-    if (std::string(kind) == "position" && behind_the_ego(role, problem, play)) return role + ": behind the ego";
-    return role + ": " + kind;
-  }
-  return problem;
-}
-
-// The kinds of the problems in a "; "-separated list, each once.
-std::set<std::string> kinds_of(const std::string& problems, const PlayConfig& play) {
-  std::set<std::string> out;
-  for (std::size_t from = 0; from < problems.size();) {
-    const std::size_t end = std::min(problems.find("; ", from), problems.size());
-    out.insert(kind_of(problems.substr(from, end - from), play));
-    from = end + 2;
-  }
-  return out;
-}
-
-// The failure's first reason as its role and kind, so that equal causes group together:
-// "lead: position", "cutter: lane", "a vehicle in a clear zone", "truck: no actor", "truck:
-// behind the ego".
-std::string cause_of(const std::string& detail, const PlayConfig& play) {
-  const auto start = detail.find(": ");
-  if (detail.rfind("start condition not met", 0) != 0 || start == std::string::npos) return detail;
-  return kind_of(detail.substr(start + 2, detail.find(';', start) - start - 2), play);
-}
-
 void print_play(const std::string& name, const PlayConfig& play, const std::vector<bench::PlayRunResult>& runs,
                 const std::vector<bench::EgoVariant>& variants) {
   std::vector<double> pos_t2, speed_t2;  // on passing trigger point 2
@@ -146,9 +98,9 @@ void print_play(const std::string& name, const PlayConfig& play, const std::vect
       beyond.push_back(r.handover_beyond_m);
       if (r.handover_wait_s < kAtTrigger_s) ++at_trigger;
     } else {
-      ++causes[r.failure.empty() ? std::string("never reached trigger point 2") : cause_of(r.failure, play)];
+      ++causes[r.failure.empty() ? std::string("never reached trigger point 2") : bench::cause_of(r.failure, play)];
     }
-    for (const std::string& k : kinds_of(r.missing_at_trigger2, play)) ++missing_at_t2[k];
+    for (const std::string& k : bench::kinds_of(r.missing_at_trigger2, play)) ++missing_at_t2[k];
     if (r.position_error_at_trigger2_m >= 0.0) {
       pos_t2.push_back(r.position_error_at_trigger2_m);
       speed_t2.push_back(std::abs(r.speed_error_at_trigger2_mps));
