@@ -112,14 +112,16 @@ std::vector<Slot> slots_of(const PlayConfig& play, Direction ego_direction, int 
 }
 
 namespace {
-// Does a role settle early (way_to): of the ego's direction, ahead of the ego, the ego closing on
+// How long before the start a role settles on its start's track (way_to; 0: it does not): an
+// oncoming role kOncomingSettle_s; one of the ego's direction, ahead of the ego, the ego closing on
 // it by more than kSettleClosing_mps, with a lane of its direction beside it for the traffic
-// behind it to pass in?
-bool settles_early(const Slot& slot, const PlayRoleConfig& role, Direction ego_direction, double ego_speed_mps,
-                   const Lanes& lanes) {
-  if (role.direction != Direction::kForward || role.ahead_m <= 0.0 || lanes.of(slot.direction) < 2) return false;
+// behind it to pass in, kSettleEarly_s.
+double settling_s(const Slot& slot, const PlayRoleConfig& role, Direction ego_direction, double ego_speed_mps,
+                  const Lanes& lanes) {
+  if (role.direction != Direction::kForward) return kOncomingSettle_s;
+  if (role.ahead_m <= 0.0 || lanes.of(slot.direction) < 2) return 0.0;
   const double relative_mps = relative_speed_mps(slot.direction, ego_direction, slot.speed_mps, ego_speed_mps);
-  return closing_speed_mps(role, relative_mps) > kSettleClosing_mps;
+  return closing_speed_mps(role, relative_mps) > kSettleClosing_mps ? kSettleEarly_s : 0.0;
 }
 
 // A waypoint `time_s` from now: where `slot` is `before_s` before the start (moving at its speed),
@@ -138,12 +140,8 @@ Waypoint way_to(const Slot& slot, const Aim& aim, const PlayRoleConfig& role, Di
     const double approach_s = cfg.beside_approach_s;
     return on_track_before(slot, time_to_start_s - approach_s, approach_s, cfg.beside_wait_ahead_m);
   }
-  if (role.direction != Direction::kForward && aim.time_s > kOncomingSettle_s) {
-    return on_track_before(slot, aim.time_s - kOncomingSettle_s, kOncomingSettle_s, 0.0);
-  }
-  if (aim.time_s > kSettleEarly_s && settles_early(slot, role, ego_direction, aim.ego_speed_mps, lanes)) {
-    return on_track_before(slot, aim.time_s - kSettleEarly_s, kSettleEarly_s, 0.0);
-  }
+  const double settle_s = settling_s(slot, role, ego_direction, aim.ego_speed_mps, lanes);
+  if (settle_s > 0.0 && aim.time_s > settle_s) return on_track_before(slot, aim.time_s - settle_s, settle_s, 0.0);
   return {slot, aim.time_s};
 }
 
