@@ -24,6 +24,8 @@ class EquilibriumSpeed {
   // speed beyond the table).
   double at(double gap_m) const;
   double max_gap_m() const { return max_gap_m_; }
+  // The car-following model this is the equilibrium of.
+  const CarFollowingParams& params() const { return params_; }
 
  private:
   static constexpr int kPoints = 48;

@@ -107,6 +107,8 @@ inline bool guard_cannot_bind(double accel_mps2, double speed_mps, double gap_m,
 }
 
 // `desired_speed_mps`: the driver's desired speed at its place (speed adaptation, look-ahead).
+// `eq`: the equilibrium of the car-following model it drives by (its driver's own, or with the
+// desired speed the director raised it to); that model also judges closing in.
 inline MesoSpeed next_speed(const Vehicle& v, const EquilibriumSpeed& eq, const Ahead& ahead, double desired_speed_mps,
                             const PlanHorizon& h, const MesoModelParams& m = {}) {
   const IdmParams& p = v.driver.car_following.idm;
@@ -132,7 +134,7 @@ inline MesoSpeed next_speed(const Vehicle& v, const EquilibriumSpeed& eq, const 
     // change: those are braked for only when comfortable braking no longer suffices.)
     const LeaderView leader{ahead.gap_m, ahead.leader_speed_mps, ahead.leader_accel_mps2};
     const double model_accel = ahead.obstacle == Obstacle::kLeader
-                                   ? car_following_accel_mps2(v.driver.car_following, v.speed_mps, &leader)
+                                   ? car_following_accel_mps2(eq.params(), v.speed_mps, &leader)
                                    : 0.0;
     if (model_accel < -p.comfort_decel_mps2) {
       next = std::min(next, v.speed_mps + std::max(model_accel, -v.driver.max_decel_mps2) * t);
