@@ -37,7 +37,8 @@ std::uint32_t read_mask(Role r) {
   const std::uint32_t world = bit(Topic::kEgoState) | bit(Topic::kVehicleState);
   switch (r) {
     case Role::kEgo: return kControl | bit(Topic::kVehicleState);
-    case Role::kGenerator: return kControl | world | bit(Topic::kHandoff);  // vehicles leaving ahead
+    // Vehicles leaving ahead, and the director's commands to them while they are in the front zone.
+    case Role::kGenerator: return kControl | world | bit(Topic::kHandoff) | bit(Topic::kActorCommand);
     case Role::kDirector: return kControl | world;
     case Role::kMicro:
     case Role::kMeso: return kControl | world | bit(Topic::kHandoff) | bit(Topic::kActorCommand);

@@ -40,8 +40,9 @@ int run(const dds::ServiceContext& ctx) {
       "{} still queued)",
       c.filled + c.placed, c.filled, c.fills, c.fill_skipped, c.fill_overlapping, c.placed, c.arrivals,
       c.at_leader_speed, c.dropped, core.queued());
-  spdlog::info("front zone: {} vehicles joined it, {} left it far ahead, {} made way for a slow platoon", c.ahead,
-               c.left_ahead, c.made_way);
+  spdlog::info("front zone: {} vehicles joined it, {} left it far ahead, {} made way for a slow platoon; director "
+               "commands applied {}",
+               c.ahead, c.left_ahead, c.made_way, c.commands_applied);
   spdlog::info("platoons arrived / their vehicles / vehicles placed: from behind {}/{}/{}, from ahead {}/{}/{}, "
                "oncoming {}/{}/{}",
                c.arrivals_at[0], c.members_at[0], c.placed_at[0], c.arrivals_at[1], c.members_at[1], c.placed_at[1],

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "core_test_util.hpp"
 #include "generator/core/generator_core.hpp"
@@ -187,6 +188,53 @@ TEST(Generator, ACarThatLeavesTheWindowHeldUpGoesOnAheadAtItsStreamSpeed) {
   };
   EXPECT_NEAR(speed_of(held_up), typical, 0.1) << "kept the speed it left the window with";
   EXPECT_NEAR(speed_of(fast), 34.0, 0.1) << "slowed below its exit speed: it would fall back into the window";
+}
+
+// A vehicle the director released (or cleared) that left the window ahead is the generator's
+// until the front edge reaches it: the director's commands to it apply there and go on with it
+// into the window. (They were dropped: an actor released in the front zone stayed "releasing" for
+// good, and a later play could not cast it.)
+TEST(Generator, TheDirectorsCommandsToAFrontZoneVehicleGoOnWithItIntoTheWindow) {
+  const ScenarioConfig sc = unregulated();
+  double s = 5000.0;
+  const WindowBounds w = WindowBounds::around(s, sc.window);
+  GeneratorConfig no_zone;
+  no_zone.front_zone_m = 0.0;
+  GeneratorCore g(sc, 3, no_zone);
+  StepInput in;
+  in.ego = ego_at(0, s, 20.0);
+  g.step(in);  // the fill
+  const VehicleId id = 9000001;
+  Random rng(id);
+  Vehicle v = make_vehicle(id, 0, sc.vehicle_types[0], Direction::kForward, 0, w.front_edge_m + 5.0, 20.0,
+                           draw_driver(sc.vehicle_types[0], 20.0, id, rng));
+  v.control.mode = ControlMode::kReleasing;  // released by the director just before it left ahead
+  in.handoffs = {make_handoff(v, 0, ServiceId{Role::kMeso, 0}, Role::kGenerator, Region::kOutside, HandoffReason::kLeftWindow)};
+  ActorCommand released;
+  released.vehicle = id;
+  released.step = 0;
+  released.control.mode = ControlMode::kAutonomous;
+  std::optional<Handoff> into_window;
+  for (int k = 1; k <= 100 && !into_window; ++k) {  // the ego at 30 m/s catches up with it
+    s += 30.0 * sc.step_s;
+    in.step = static_cast<Step>(k);
+    in.ego = ego_at(in.step, s, 30.0);
+    in.commands.clear();
+    if (k == 3) {
+      const Vehicle* here = g.front_zone().find(id);
+      ASSERT_NE(here, nullptr);
+      EXPECT_EQ(here->control.mode, ControlMode::kReleasing);
+      in.commands = {released};
+    }
+    for (const Handoff& h : g.step(in).handoffs) {
+      if (h.vehicle.id == id) into_window = h;
+    }
+    in.handoffs.clear();
+  }
+  ASSERT_TRUE(into_window.has_value());
+  EXPECT_EQ(into_window->to_role, Role::kMeso);
+  EXPECT_EQ(into_window->vehicle.control.mode, ControlMode::kAutonomous);
+  EXPECT_EQ(g.counters().commands_applied, 1U);
 }
 
 TEST(Generator, ArrivalsMatchTheMovingObserverRates) {

@@ -37,6 +37,11 @@ class FrontZone {
   // Removes and returns the vehicle `id` (if the zone has it).
   std::vector<Vehicle> remove(VehicleId id);
 
+  // The director's commands to vehicles of the zone (a released actor or cleared vehicle that left
+  // the window ahead): their control goes on with them into the window; the zone's own driving
+  // does not look at it. Returns how many applied.
+  std::size_t apply(const std::vector<ActorCommand>& commands) { return apply_commands(fleet_, commands); }
+
   const Fleet& vehicles() const { return fleet_; }
   bool owns(VehicleId id) const { return fleet_.owns(id); }
 

@@ -50,6 +50,7 @@ std::size_t GeneratorCore::queued() const {
 StepOutput GeneratorCore::step(const StepInput& in) {
   StepOutput out;
   for (const Handoff& h : inbox_.accept(in.handoffs)) adopt_left_ahead(h.vehicle);
+  counters_.commands_applied += zone_.apply(in.commands);
   perceive(in);
   zone_.move(index_, scenario_.step_s);
   index_world(in);

@@ -67,6 +67,7 @@ struct Counters {
   std::uint64_t left_ahead = 0;     // front-zone vehicles that left far ahead without entering
   std::uint64_t made_way = 0;       // faster front-zone vehicles taken to have passed a slow platoon
   std::uint64_t fills = 0;          // number of initial fills (1 + jumps)
+  std::uint64_t commands_applied = 0;  // director commands to front-zone vehicles (FrontZone::apply)
   // Platoons expected per entrance at the moving-observer rates over the ego's speeds, plain and
   // as the regulation scaled them: their ratio is what the regulation did to the arrivals.
   std::array<double, kEntrances> expected_plain_at{};
