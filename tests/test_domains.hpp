@@ -44,6 +44,7 @@ enum : int {
   kPipelineCarried,
   kFaultLossyCarried,
   kFaultCleanCarried,
+  kSeveralPlays,
   kEnd  // one past the last
 };
 

@@ -5,6 +5,9 @@
 // reaches a verdict (done, or failed with the reason).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <map>
 #include <ostream>
 #include <string>
 
@@ -87,6 +90,55 @@ TEST_P(PlayIsSafe, NoOverlapNoCreationInViewAndAVerdictWithVariedDrivers) {
 INSTANTIATE_TEST_SUITE_P(Shipped, PlayIsSafe,
                          ::testing::Values("freeway_lead_brakes", "freeway_cut_in", "freeway_stopped_vehicle",
                                            "rural_slow_truck"));
+
+// Several plays in one drive (freeway_three_plays.pbtxt: a cut-in, the lead vehicle braking, a
+// vehicle stopped in the lane, 4 km apart): each runs to its end on its own actors, in turn, and
+// between two plays no vehicle is under the director's control any more (each play released its
+// actors and the vehicles it cleared before the next one is prepared), nor at the end of the drive.
+// (A vehicle released after it had left the window ahead stayed "releasing" for good until the
+// generator applied the director's commands to its front zone, stop 63.)
+TEST(SeveralPlays, EachRunsToItsEndInTurnAndLeavesNoVehicleUnderCommand) {
+  const ScenarioConfig sc = shipped("freeway_three_plays");
+  ASSERT_EQ(sc.plays.size(), 3U);
+  WindowCores cores(sc, 3);  // all three done with seeds 2-12; without the fix, seed 3 left 5 vehicles under command
+  std::map<std::uint32_t, director::PlayPhase> phase;       // per play id, its last report's
+  std::map<std::uint32_t, std::vector<VehicleId>> actors;  // per play id, every vehicle it cast
+  std::size_t next_trigger = 1;  // the play whose trigger point 1 is checked next
+  const auto last = static_cast<Step>(std::lround(sc.duration_s / sc.step_s));
+  Step k = 0;
+  for (; k <= last && !cores.at_road_end(); ++k) {
+    StepInput in = cores.next_input();
+    if (next_trigger < sc.plays.size() && in.ego.s_m >= sc.plays[next_trigger].trigger1_s_m) {
+      for (const ObservedVehicle& v : in.world_prev) {
+        EXPECT_EQ(v.control, ControlMode::kAutonomous)
+            << "vehicle " << v.id << " still under a command when " << sc.plays[next_trigger].name << " is prepared";
+      }
+      ++next_trigger;
+    }
+    const StepOutputs out = cores.compute(in);
+    for (const director::PlayReport& r : out.director.reports) phase[r.play_id] = r.phase;
+    for (const director::PlayRun& p : cores.director().plays()) {
+      for (VehicleId id : p.actors()) {
+        std::vector<VehicleId>& cast = actors[p.config().id];
+        if (std::find(cast.begin(), cast.end(), id) == cast.end()) cast.push_back(id);
+      }
+    }
+    cores.publish(in, out);
+    const bool all_over = std::all_of(sc.plays.begin(), sc.plays.end(), [&](const PlayConfig& p) {
+      const auto it = phase.find(p.id);
+      return it != phase.end() && (it->second == director::PlayPhase::kDone || it->second == director::PlayPhase::kFailed);
+    });
+    if (all_over && in.ego.s_m > sc.plays.back().trigger2_s_m + 2000.0) break;
+  }
+  ASSERT_EQ(next_trigger, sc.plays.size()) << "the drive ended at step " << k;
+  for (const PlayConfig& p : sc.plays) {
+    EXPECT_EQ(phase[p.id], director::PlayPhase::kDone) << p.name;
+    EXPECT_FALSE(actors[p.id].empty()) << p.name;
+  }
+  for (const ObservedVehicle& v : cores.world()) {
+    EXPECT_EQ(v.control, ControlMode::kAutonomous) << "vehicle " << v.id << " still under a command at the end";
+  }
+}
 
 }  // namespace
 }  // namespace entourage::bench
