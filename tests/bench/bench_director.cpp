@@ -290,6 +290,11 @@ int run(int argc, char** argv) {
   args.flag("trace", "every play report of every run as well (to stderr)", &trace);
   args.flag("trace-traffic", "the vehicles around the ego every 2 s of every play as well (to stderr)", &trace_traffic);
   args.flag("plain", "the scenario's own ego driver in every run (only the traffic seed varies)", &plain);
+  std::string play_name;
+  args.option("play", "NAME",
+              "in a scenario with several plays, the one to measure (default: its first); the others are "
+              "prepared and run as well",
+              &play_name);
   std::string paired_path;
   args.option("paired", "FILE",
               "a previous --verbose output of the same scenario: the runs this version gained and lost against it, "
@@ -336,13 +341,19 @@ int run(int argc, char** argv) {
     paths = {scenario_path};
   }
   for (const std::string& path : paths) {
-    const auto loaded = scenario::load_file(path);
+    auto loaded = scenario::load_file(path);
     if (!loaded.ok()) {
       for (const auto& p : loaded.problems) std::cerr << p.to_string() << "\n";
       return 2;
     }
     if (loaded.config.plays.empty()) {
       std::cerr << "entourage-bench-director: " << path << " has no play\n";
+      return 2;
+    }
+    if (!play_name.empty() && !bench::measure_play(loaded.config, play_name)) {
+      std::cerr << "entourage-bench-director: " << path << " has no play named \"" << play_name << "\" (it has";
+      for (const PlayConfig& p : loaded.config.plays) std::cerr << " \"" << p.name << "\"";
+      std::cerr << ")\n";
       return 2;
     }
     const std::size_t n = static_cast<std::size_t>(runs);

@@ -109,6 +109,13 @@ const char* to_string(EgoVariant v) {
   return "?";
 }
 
+bool measure_play(ScenarioConfig& sc, const std::string& name) {
+  const auto it = std::find_if(sc.plays.begin(), sc.plays.end(), [&](const PlayConfig& p) { return p.name == name; });
+  if (it == sc.plays.end()) return false;
+  std::rotate(sc.plays.begin(), it, it + 1);
+  return true;
+}
+
 ScenarioConfig vary_ego(ScenarioConfig sc, int index, std::uint64_t seed, EgoVariant* variant) {
   const auto v = static_cast<EgoVariant>(index % 3);
   if (variant != nullptr) *variant = v;

@@ -28,6 +28,11 @@ const char* to_string(EgoVariant v);
 // +-15 km/h around the scenario's by a draw from `seed`.
 ScenarioConfig vary_ego(ScenarioConfig sc, int index, std::uint64_t seed, EgoVariant* variant);
 
+// A run measures the scenario's first play (the ego's braking, the figures and the end of the run
+// follow it); the others are prepared and run as well. Puts the play named `name` first, the
+// others after it in their order, and returns whether the scenario has it.
+bool measure_play(ScenarioConfig& sc, const std::string& name);
+
 struct MotionExtremes {
   double max_accel_mps2 = 0.0;
   double max_decel_mps2 = 0.0;  // positive

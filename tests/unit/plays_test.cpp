@@ -10,6 +10,8 @@
 #include <map>
 #include <ostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core_test_util.hpp"
 #include "play_runs.hpp"
@@ -138,6 +140,21 @@ TEST(SeveralPlays, EachRunsToItsEndInTurnAndLeavesNoVehicleUnderCommand) {
   for (const ObservedVehicle& v : cores.world()) {
     EXPECT_EQ(v.control, ControlMode::kAutonomous) << "vehicle " << v.id << " still under a command at the end";
   }
+}
+
+// The bench measures one play of a scenario with several (`--play NAME`): that one first, the
+// others after it in their order, each keeping its id.
+TEST(SeveralPlays, TheBenchMeasuresTheNamedPlayAndRunsTheOthers) {
+  ScenarioConfig sc = shipped("freeway_three_plays");
+  std::vector<std::pair<std::uint32_t, std::string>> before;
+  for (const PlayConfig& p : sc.plays) before.emplace_back(p.id, p.name);
+  EXPECT_FALSE(measure_play(sc, "no such play"));
+  ASSERT_TRUE(measure_play(sc, "lead vehicle brakes"));
+  ASSERT_EQ(sc.plays.size(), 3U);
+  EXPECT_EQ(sc.plays[0].name, before[1].second);
+  EXPECT_EQ(sc.plays[0].id, before[1].first);
+  EXPECT_EQ(sc.plays[1].name, before[0].second);
+  EXPECT_EQ(sc.plays[2].name, before[2].second);
 }
 
 }  // namespace
