@@ -102,7 +102,8 @@ class MesoCore {
   Ahead ahead_of(const Vehicle& v, bool own_lane_only) const;
   const EquilibriumSpeed& equilibrium_of(const Vehicle& v);
   // The equilibrium it is planned by at `desired_speed_mps`: its driver's own (equilibrium_of), or,
-  // asked by the director to drive faster than its driver wishes, its model's at that speed (the
+  // asked to drive faster than its driver wishes (by the director, or a section that raises the
+  // drivers' speeds), its model's at that speed, as micro's model drives it (the
   // own relation is capped at the driver's desired speed within a kilometre of any leader: an
   // actor asked to speed up in meso did not, cut-in seed 136, a cutter asked to 36.8 m/s drove on
   // at its own 30.9 for a minute, 270 m behind its start at the handover).
