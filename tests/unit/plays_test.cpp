@@ -94,7 +94,7 @@ INSTANTIATE_TEST_SUITE_P(Shipped, PlayIsSafe,
                                            "rural_slow_truck"));
 
 // Several plays in one drive (freeway_three_plays.pbtxt: a cut-in, the lead vehicle braking, a
-// vehicle stopped in the lane, 4 km apart): each runs to its end on its own actors, in turn, and
+// vehicle stopped in the lane, 4 km apart): each casts its actors and runs to its end, in turn, and
 // between two plays no vehicle is under the director's control any more (each play released its
 // actors and the vehicles it cleared before the next one is prepared), nor at the end of the drive.
 // (A vehicle released after it had left the window ahead stayed "releasing" for good until the
@@ -102,7 +102,9 @@ INSTANTIATE_TEST_SUITE_P(Shipped, PlayIsSafe,
 TEST(SeveralPlays, EachRunsToItsEndInTurnAndLeavesNoVehicleUnderCommand) {
   const ScenarioConfig sc = shipped("freeway_three_plays");
   ASSERT_EQ(sc.plays.size(), 3U);
-  WindowCores cores(sc, 3);  // all three done with seeds 2-12; without the fix, seed 3 left 5 vehicles under command
+  // All three done on seeds 2-12. Without the generator's fix, seed 3 ends with 4 vehicles under a
+  // command, one of them since before the third play was prepared.
+  WindowCores cores(sc, 3);
   std::map<std::uint32_t, director::PlayPhase> phase;       // per play id, its last report's
   std::map<std::uint32_t, std::vector<VehicleId>> actors;  // per play id, every vehicle it cast
   std::size_t next_trigger = 1;  // the play whose trigger point 1 is checked next
