@@ -185,12 +185,12 @@ const EquilibriumSpeed& MesoCore::equilibrium_of(const Vehicle& v) {
   return it->second;
 }
 
-const EquilibriumSpeed& MesoCore::equilibrium_at(const Vehicle& v, double desired_speed_mps) {
+const EquilibriumSpeed& MesoCore::equilibrium_at(const Vehicle& v, double desired_speed_mps,
+                                                 std::optional<EquilibriumSpeed>& raised) {
   if (desired_speed_mps <= v.driver.desired_speed_mps()) return equilibrium_of(v);
-  CarFollowingParams raised = v.driver.car_following;
-  raised.idm.desired_speed_mps = desired_speed_mps;
-  raised_ = EquilibriumSpeed(raised);  // two entries computed per plan: a few dozen model evaluations
-  return raised_;
+  CarFollowingParams params = v.driver.car_following;
+  params.idm.desired_speed_mps = desired_speed_mps;
+  return raised.emplace(params);  // two entries computed per plan: a few dozen model evaluations
 }
 
 bool MesoCore::alert(VehicleId id) const { return std::binary_search(alert_.begin(), alert_.end(), id); }
@@ -227,7 +227,8 @@ void MesoCore::plan(bool everyone, int steps_left) {
     }
     const bool call_off = calls_off_change(v, index_, lane_rules_);
     const Ahead ahead = ahead_of(v, call_off);
-    const MesoSpeed ms = next_speed(v, equilibrium_at(v, desired), ahead, desired, horizon, model_);
+    std::optional<EquilibriumSpeed> raised;
+    const MesoSpeed ms = next_speed(v, equilibrium_at(v, desired, raised), ahead, desired, horizon, model_);
     if (ms.emergency) ++counters_.emergency_stops;
     if (calls_for_alert(v, ahead, ms)) still_alert.push_back(v.id);
     const int must = mandatory_target_lane(v, env_);

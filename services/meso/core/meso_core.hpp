@@ -19,6 +19,7 @@
 //             edge go on in the generator's front zone, other vehicles beyond the edges retire
 
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -107,7 +108,9 @@ class MesoCore {
   // own relation is capped at the driver's desired speed within a kilometre of any leader: an
   // actor asked to speed up in meso did not, cut-in seed 136, a cutter asked to 36.8 m/s drove on
   // at its own 30.9 for a minute, 270 m behind its start at the handover).
-  const EquilibriumSpeed& equilibrium_at(const Vehicle& v, double desired_speed_mps);
+  // The raised relation is made in `raised` (the caller's, for the one plan), two entries of it computed.
+  const EquilibriumSpeed& equilibrium_at(const Vehicle& v, double desired_speed_mps,
+                                         std::optional<EquilibriumSpeed>& raised);
   StepOutput hand_off(const StepInput& in);
   bool serves(Region r) const;
 
@@ -128,7 +131,6 @@ class MesoCore {
   DrivingEnvironment env_;
   UnseenOncoming unseen_;  // the oncoming traffic beyond the window's front edge (traffic/unseen_oncoming.hpp)
   std::unordered_map<VehicleId, EquilibriumSpeed> equilibrium_;  // per owned vehicle's driver
-  EquilibriumSpeed raised_;  // the one plan's, for a vehicle asked above its desired speed (equilibrium_at)
   Counters counters_;
 };
 
