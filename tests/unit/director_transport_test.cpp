@@ -96,6 +96,35 @@ TEST(Transport, AnActorTrackingItsCommandReachesTheSlotWithinAMetreAndTheSlotSpe
   EXPECT_LT(miss.position_error_m, -20.0);
 }
 
+TEST(Transport, NearTheEgoTheDesiredSpeedFallsAsFastAsTheEgoBrakesUpToAComfortableRate) {
+  const PlayConfig play = lead_play();
+  DirectorConfig cfg;
+  const Slot slot = slots_of(play, Direction::kForward, 0, at_trigger2(play, 25.0), Lanes{2, 0})[0];
+  // 80 m ahead of the ego and fast: the plan wants it much slower (960 m in 40 s).
+  const double dt = 0.1;
+  const auto fall_per_step = [&](double ego_accel_mps2, double actor_s_m) {
+    EgoObservation ego = testing::ego_at(0, 2000.0, 25.0);
+    ego.accel_mps2 = ego_accel_mps2;
+    const TransportCommand c =
+        transport(slot, vehicle(2, actor_s_m, 30.0), 40.0, 30.0, dt, {}, ego, Lanes{2, 0}, cfg, cfg.transport_rate_mps2, 0.0);
+    return 30.0 - c.speed_mps;
+  };
+  EXPECT_NEAR(fall_per_step(0.0, 2080.0), kCommandRate_mps2 * dt, 1e-9);   // a steady ego
+  EXPECT_NEAR(fall_per_step(0.5, 2080.0), kCommandRate_mps2 * dt, 1e-9);   // one speeding up
+  EXPECT_NEAR(fall_per_step(-0.6, 2080.0), kCommandRate_mps2 * dt, 1e-9);  // braking gently
+  EXPECT_NEAR(fall_per_step(-1.5, 2080.0), 1.5 * dt, 1e-9);                // braking harder: as fast
+  EXPECT_NEAR(fall_per_step(-6.0, 2080.0), kCommandFallWithEgoMax_mps2 * dt, 1e-9);  // hard: a comfortable rate
+  // Further from the ego than kCommandFallWithEgoWithin_m (behind it or ahead): its own pace.
+  EXPECT_NEAR(fall_per_step(-1.5, 2000.0 + kCommandFallWithEgoWithin_m + 1.0), kCommandRate_mps2 * dt, 1e-9);
+  EXPECT_NEAR(fall_per_step(-1.5, 2000.0 - kCommandFallWithEgoWithin_m - 1.0), kCommandRate_mps2 * dt, 1e-9);
+  // It rises at the command rate whatever the ego does.
+  EgoObservation braking = testing::ego_at(0, 2000.0, 25.0);
+  braking.accel_mps2 = -3.0;
+  const TransportCommand up =
+      transport(slot, vehicle(3, 1200.0, 20.0), 40.0, 20.0, dt, {}, braking, Lanes{2, 0}, cfg, cfg.transport_rate_mps2, 0.0);
+  EXPECT_NEAR(up.speed_mps - 20.0, kCommandRate_mps2 * dt, 1e-9);
+}
+
 TEST(Transport, AnActorToSpeedUpIsGivenTheDesiredSpeedAtWhichItsFreeRoadAccelerationIsThePlansRate) {
   // IDM's free road: a (1 - (v / v0)^4); with v0 the drive speed, that is the plan's rate.
   const double a = 1.4;

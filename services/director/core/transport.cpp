@@ -81,6 +81,11 @@ bool held_up(Direction direction, int lane, double target_p, const ObservedVehic
 }
 }  // namespace
 
+double command_fall_rate_mps2(double ego_accel_mps2, double from_ego_m) {
+  if (from_ego_m >= kCommandFallWithEgoWithin_m) return kCommandRate_mps2;
+  return std::clamp(-ego_accel_mps2, kCommandRate_mps2, kCommandFallWithEgoMax_mps2);
+}
+
 double drive_speed_mps(double speed_mps, double actor_speed_mps, double rate_mps2, double type_accel_mps2) {
   if (type_accel_mps2 <= 0.0 || speed_mps <= actor_speed_mps) return speed_mps;
   const double share = std::min(rate_mps2 / type_accel_mps2, kMaxDriveShare);
@@ -113,8 +118,9 @@ TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, doubl
   c.speed_error_mps = actor.speed_mps - slot.speed_mps;
   const double target = t <= plan.final_change_s + dt_s ? slot.speed_mps : plan.cruise_mps;
   const double from = previous_cmd_mps >= 0.0 ? previous_cmd_mps : actor.speed_mps;
-  const double step = kCommandRate_mps2 * dt_s;
-  c.speed_mps = std::max(0.0, std::clamp(target, from - step, from + step));
+  const double up = kCommandRate_mps2 * dt_s;
+  const double down = command_fall_rate_mps2(ego.accel_mps2, std::abs(actor.s_m - ego.s_m)) * dt_s;
+  c.speed_mps = std::max(0.0, std::clamp(target, from - down, from + up));
   c.drive_mps = drive_speed_mps(c.speed_mps, actor.speed_mps, rate_mps2, type_accel_mps2);
   // Held up on the way: a neighbouring lane to get past, kept until it is past.
   c.lane = slot.lane;

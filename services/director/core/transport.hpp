@@ -8,8 +8,9 @@
 // rate (the slot of a role slower than the ego ahead of it is a waypoint on its start's track
 // kSettleEarly_s before the start: stage.hpp, way_to). The actor is
 // given the cruise speed as its desired speed, then the slot's speed once the final change is
-// due; the desired speed moves by at most kCommandRate per second, so the driver model eases into
-// it instead of jumping (the plan's rate is lower than that, for the driver's lag).
+// due; the desired speed moves by at most kCommandRate per second (falls faster while the ego
+// brakes: command_fall_rate_mps2), so the driver model eases into it instead of jumping (the
+// plan's rate is lower than that, for the driver's lag).
 //
 // Lane: the slot's lane, except that an actor that must get past a slower vehicle in that lane
 // (or past the ego) first takes a neighbouring lane, if it is not held up there as well (behind
@@ -33,6 +34,19 @@ namespace entourage::director {
 // How fast the desired speed given to an actor may change (above the plan's rate,
 // DirectorConfig::transport_rate_mps2, which leaves room for the driver's lag).
 inline constexpr double kCommandRate_mps2 = 1.0;
+// While the ego brakes harder than that, the desired speed of an actor near it (within
+// kCommandFallWithEgoWithin_m, ahead or behind: a driver who sees it brake) may fall as fast as the
+// ego slows down, up to what a car's driver brakes at comfortably (IDM's b, some 2 m/s^2): the
+// start moves with the ego, and an actor slowing more gently overshoots it. Traced, cut-in seed 5
+// (stop 64): the ego braked from 28.6 to 17 m/s at 1.5 m/s^2 while the cutter came up 42 m behind
+// in the next lane at 35 m/s; slowing at 1 m/s^2 it passed the ego and ran up to 110 m ahead of its
+// start, which the plan, within 8 m/s of the start speed, could not win back by trigger point 2.
+// Not further away: a cutter 190 m behind the ego that slowed with it was left behind in the
+// ego's lane when the ego sped up again (seed 305).
+inline constexpr double kCommandFallWithEgoMax_mps2 = 2.0;
+inline constexpr double kCommandFallWithEgoWithin_m = 100.0;
+// `from_ego_m`: the actor's distance from the ego along the road.
+double command_fall_rate_mps2(double ego_accel_mps2, double from_ego_m);
 
 struct TransportCommand {
   double speed_mps = 0.0;     // the speed the actor should drive at now (rate-limited plan)
