@@ -39,7 +39,7 @@ inline constexpr double kCommandRate_mps2 = 1.0;
 // ego slows down, up to what a car's driver brakes at comfortably (IDM's b, some 2 m/s^2): the
 // start moves with the ego, and an actor slowing more gently overshoots it. Traced, cut-in seed 5
 // (stop 64): the ego braked from 28.6 to 17 m/s at 1.5 m/s^2 while the cutter came up 42 m behind
-// in the next lane at 35 m/s; slowing at 1 m/s^2 it passed the ego and ran up to 110 m ahead of its
+// in the next lane at 35 m/s; slowing at 1 m/s^2 it passed the ego and ran up to 113 m ahead of its
 // start, which the plan, within 8 m/s of the start speed, could not win back by trigger point 2.
 // Not further away: a cutter 190 m behind the ego that slowed with it was left behind in the
 // ego's lane when the ego sped up again (seed 305).
