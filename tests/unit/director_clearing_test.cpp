@@ -86,6 +86,38 @@ TEST(Clearing, AVehicleWaitingToLeaveAZoneIsLetInByTheOneJustBehindItInTheTarget
   EXPECT_EQ(after->lane, 1);
 }
 
+// One that holds back behind a faster waiting vehicle is never asked above the top speed of its
+// type's drivers (cut-in, seed 478: a truck holding back for a car that waited at 33 m/s was asked
+// to 31 m/s, where trucks wish 26.4 at most, and drove at 27.6).
+TEST(Clearing, OneHoldingBackIsNeverAskedAboveItsTypesTopSpeed) {
+  ScenarioConfig sc = testing::minimal_scenario();
+  VehicleTypeConfig truck = sc.vehicle_types.at(0);
+  truck.name = "truck";
+  truck.driver.desired_speed_mps.max = 20.0;
+  sc.vehicle_types.push_back(truck);
+  PlayConfig play = lead_play();
+  play.roles[0].ahead_m = 250.0;
+  play.clear = {{0, 3.0, 240.0}};
+  sc.plays = {play};
+  DirectorCore core(sc, 1);
+  StepInput in;
+  ObservedVehicle waiting = vehicle(8, 2100.0, 25.0, 0);  // in the zone, asked into lane 1
+  ObservedVehicle behind = vehicle(9, 2092.0, 19.5, 1);   // a truck beside it, a little behind
+  behind.type_index = 1;
+  for (Step k = 0; k < 4; ++k) {  // trigger point 1; cast; clearing; the waiting one signals
+    in.step = k;
+    in.ego = testing::ego_at(k, 2000.0 + 2.5 * static_cast<double>(k), 25.0);
+    waiting.indicator = k == 3 ? 1 : 0;
+    in.world_prev = {vehicle(7, 2260.0, 25.0), waiting, behind};
+    const DirectorOutput out = core.step(in);
+    if (k < 3) continue;
+    const ActorControl* holds = command_for(out, 9);
+    ASSERT_NE(holds, nullptr);
+    EXPECT_EQ(holds->lane, 1);
+    EXPECT_NEAR(holds->speed_mps, 20.0, 1e-9);  // not 25 - kLetIn_mps
+  }
+}
+
 // An actor on its way into its start's lane that waits there, indicator on, is let in the same
 // way (cut-in, seed 37, stop 55: the cutter, ahead of the ego in the ego's lane, signalled for 60 s
 // while a column of cleared cars 4 m/s faster passed it in the lane it was to take).

@@ -340,7 +340,10 @@ void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, PlayOu
     }
     letting_in_[id] = f->id;
     lane_requests_.erase(f->id);
-    command(f->id, transported(std::max(0.0, v.speed_mps - kLetIn_mps), f->lane), in.step, out);
+    // Never asked above its type's top speed: behind a faster waiting vehicle, a truck was asked to
+    // 33 m/s where trucks wish 26.4 at most.
+    const double hold_mps = std::min(v.speed_mps - kLetIn_mps, top_speed_of(setting_.types, f->type_index));
+    command(f->id, transported(std::max(0.0, hold_mps), f->lane), in.step, out);
   }
 }
 
