@@ -118,6 +118,35 @@ TEST(Clearing, OneHoldingBackIsNeverAskedAboveItsTypesTopSpeed) {
   }
 }
 
+// A vehicle holding up an actor on its way makes way at the actor's pace, not at its own (asked only
+// to change lanes, it dropped back to find a gap behind slower traffic in the other lane, with the
+// actor behind it), within what its type's drivers wish.
+TEST(Clearing, AVehicleMakingWayForAnActorDoesSoAtTheActorsPace) {
+  ScenarioConfig sc = testing::cutter_scenario();
+  VehicleTypeConfig truck = sc.vehicle_types.at(0);
+  truck.name = "truck";  // not a car: never cast as the cutter
+  truck.driver.desired_speed_mps.max = 30.0;
+  sc.vehicle_types.push_back(truck);
+  DirectorCore core(sc, 1);
+  StepInput in;
+  const ObservedVehicle cutter = vehicle(7, 1990.0, 32.0, 1);  // just behind the ego in the left lane
+  ObservedVehicle slow = vehicle(8, 2030.0, 20.0, 1);  // a truck ahead of it there
+  slow.type_index = 1;
+  std::optional<ActorControl> asked;
+  for (Step k = 0; k < 6 && !asked; ++k) {  // trigger point 1; cast; transporting and clearing
+    in.step = k;
+    in.ego = testing::ego_at(k, 2000.0 + 2.5 * static_cast<double>(k), 25.0);
+    in.world_prev = {cutter, slow};
+    const DirectorOutput out = core.step(in);
+    if (const ActorControl* c = command_for(out, 8)) asked = *c;
+  }
+  ASSERT_TRUE(asked.has_value());
+  EXPECT_EQ(asked->mode, ControlMode::kTransported);
+  EXPECT_EQ(asked->lane, 0);
+  EXPECT_GT(asked->speed_mps, slow.speed_mps);  // the cutter's pace, not kOwnDesiredSpeed_mps
+  EXPECT_LE(asked->speed_mps, 30.0);            // within what its type's drivers wish
+}
+
 // An actor on its way into its start's lane that waits there, indicator on, is let in the same
 // way (cut-in, seed 37, stop 55: the cutter, ahead of the ego in the ego's lane, signalled for 60 s
 // while a column of cleared cars 4 m/s faster passed it in the lane it was to take).

@@ -320,7 +320,8 @@ TEST_F(CutterOnItsWay, AVehicleHoldingAnActorUpOnItsWayMakesWayToALaneClearOfThe
   const auto way = make_way(slow, slot, actor, 27.0, -1, at);
   ASSERT_TRUE(way.has_value());
   EXPECT_EQ(way->lane, 0);
-  EXPECT_EQ(way->speed_mps, kOwnDesiredSpeed_mps);
+  // At the actor's command, not dropping back in its lane to find a gap in the other one.
+  EXPECT_EQ(way->speed_mps, 27.0);
   // Not a vehicle it would move into a zone (it would end 40 m ahead of the ego in its lane) ...
   const ObservedVehicle into_zone = vehicle(3, 2020.0, 25.5, 1);
   EXPECT_FALSE(make_way(into_zone, slot, actor, 28.0, -1, at).has_value());

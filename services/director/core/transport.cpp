@@ -426,7 +426,7 @@ std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, co
     });
   };
   for (int lane : {v.lane - 1, v.lane + 1}) {  // the right one first
-    if (clear_lane(lane)) return Clearance{kOwnDesiredSpeed_mps, lane};
+    if (clear_lane(lane)) return Clearance{actor_cmd_mps, lane};
   }
   return std::nullopt;
 }

@@ -169,13 +169,20 @@ struct ClearingSituation {
 std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSituation& at);
 
 // A vehicle that holds an actor up on its way to its slot (in the slot's lane, ahead of the actor
-// within kHoldsUpHorizon_s at its speed and not beyond the slot, slower than the actor's command
-// by kHoldsUp_mps) is asked to make way: to a neighbouring lane that is no actor's and where it
-// stands clear of every zone at the start, at its own speed. Nothing if there is none. Never into
-// the lane the actor is in, moving to, or was told to take (`actor_cmd_lane`, -1: none): an actor
-// held up passes in a neighbouring lane (transport), and a vehicle asked at the same time to make
-// way into that lane stood in front of it there (stopped vehicle, seed 13: the stopper boxed in
-// behind two vehicles cleared at 24 m/s, 22 m short of its start).
+// within kHoldsUpHorizon_s at its speed and not beyond the slot, slower than the actor's command by
+// kHoldsUp_mps) is asked to make way: to a neighbouring lane that is no actor's and where it stands
+// clear of every zone at the start, at the actor's command (`actor_cmd_mps`; the caller caps it at
+// the top speed of the vehicle's type), not at its own speed: asked only to change lanes, it
+// dropped back in its lane to find a gap behind slower traffic there (gap seeking,
+// traffic/lane_changes.hpp) and held the actor up behind it (cut-in, seeds 1-400: the cutter held
+// up 10 s or more in 38 of the 46 failures, mostly by vehicles of the director's; stop 65). It
+// keeps that pace once it has moved over, until the handover, as every cleared vehicle keeps its
+// last command (back at its own speed once over: 523 of seeds 1-600 against 529, NOTES.md stop 65).
+// Nothing if there is none. Never into the lane the actor is in, moving to, or was told to take
+// (`actor_cmd_lane`, -1: none): an actor held up passes in a neighbouring lane (transport), and a
+// vehicle asked at the same time to make way into that lane stood in front of it there (stopped
+// vehicle, seed 13: the stopper boxed in behind two vehicles cleared at 24 m/s, 22 m short of its
+// start).
 std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, const ObservedVehicle& actor,
                                   double actor_cmd_mps, int actor_cmd_lane, const ClearingSituation& at);
 
