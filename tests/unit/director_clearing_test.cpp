@@ -26,16 +26,32 @@ const ActorControl* command_for(const DirectorOutput& out, VehicleId id) {
   return nullptr;
 }
 
-// A vehicle cleared off the ego's lane that waits, indicator on, to change into the next lane
-// is let in: the vehicle just behind it there holds back (one at a time), and drives on at its own
-// speed once the other has moved over.
-TEST(Clearing, AVehicleWaitingToLeaveAZoneIsLetInByTheOneJustBehindItInTheTargetLane) {
+// The minimal scenario with one play whose lead starts 250 m ahead of the ego, behind a clear zone
+// in the ego's lane from 3 to 240 m ahead of it.
+ScenarioConfig zone_ahead_scenario() {
   ScenarioConfig sc = testing::minimal_scenario();
   PlayConfig play = lead_play();
   play.roles[0].ahead_m = 250.0;
   play.clear = {{0, 3.0, 240.0}};
   sc.plays = {play};
-  DirectorCore core(sc, 1);
+  return sc;
+}
+
+// `sc` with a second vehicle type, "truck" (type index 1), whose drivers wish `top_mps` at most:
+// never cast as a car's role.
+ScenarioConfig with_trucks(ScenarioConfig sc, double top_mps) {
+  VehicleTypeConfig truck = sc.vehicle_types.at(0);
+  truck.name = "truck";
+  truck.driver.desired_speed_mps.max = top_mps;
+  sc.vehicle_types.push_back(truck);
+  return sc;
+}
+
+// A vehicle cleared off the ego's lane that waits, indicator on, to change into the next lane
+// is let in: the vehicle just behind it there holds back (one at a time), and drives on at its own
+// speed once the other has moved over.
+TEST(Clearing, AVehicleWaitingToLeaveAZoneIsLetInByTheOneJustBehindItInTheTargetLane) {
+  DirectorCore core(zone_ahead_scenario(), 1);
   StepInput in;
   ObservedVehicle waiting = vehicle(8, 2100.0, 25.0, 0);  // 100 m ahead of the ego: in the zone
   const ObservedVehicle behind = vehicle(9, 2092.0, 26.0, 1);  // beside it, a little behind
@@ -90,16 +106,7 @@ TEST(Clearing, AVehicleWaitingToLeaveAZoneIsLetInByTheOneJustBehindItInTheTarget
 // type's drivers (cut-in, seed 478: a truck holding back for a car that waited at 33 m/s was asked
 // to 31 m/s, where trucks wish 26.4 at most, and drove at 27.6).
 TEST(Clearing, OneHoldingBackIsNeverAskedAboveItsTypesTopSpeed) {
-  ScenarioConfig sc = testing::minimal_scenario();
-  VehicleTypeConfig truck = sc.vehicle_types.at(0);
-  truck.name = "truck";
-  truck.driver.desired_speed_mps.max = 20.0;
-  sc.vehicle_types.push_back(truck);
-  PlayConfig play = lead_play();
-  play.roles[0].ahead_m = 250.0;
-  play.clear = {{0, 3.0, 240.0}};
-  sc.plays = {play};
-  DirectorCore core(sc, 1);
+  DirectorCore core(with_trucks(zone_ahead_scenario(), 20.0), 1);
   StepInput in;
   ObservedVehicle waiting = vehicle(8, 2100.0, 25.0, 0);  // in the zone, asked into lane 1
   ObservedVehicle behind = vehicle(9, 2092.0, 19.5, 1);   // a truck beside it, a little behind
@@ -122,12 +129,7 @@ TEST(Clearing, OneHoldingBackIsNeverAskedAboveItsTypesTopSpeed) {
 // to change lanes, it dropped back to find a gap behind slower traffic in the other lane, with the
 // actor behind it), within what its type's drivers wish.
 TEST(Clearing, AVehicleMakingWayForAnActorDoesSoAtTheActorsPace) {
-  ScenarioConfig sc = testing::cutter_scenario();
-  VehicleTypeConfig truck = sc.vehicle_types.at(0);
-  truck.name = "truck";  // not a car: never cast as the cutter
-  truck.driver.desired_speed_mps.max = 30.0;
-  sc.vehicle_types.push_back(truck);
-  DirectorCore core(sc, 1);
+  DirectorCore core(with_trucks(testing::cutter_scenario(), 30.0), 1);
   StepInput in;
   const ObservedVehicle cutter = vehicle(7, 1990.0, 32.0, 1);  // just behind the ego in the left lane
   ObservedVehicle slow = vehicle(8, 2030.0, 20.0, 1);  // a truck ahead of it there
