@@ -70,7 +70,8 @@ void print_play(const std::string& name, const PlayConfig& play, const std::vect
                 const std::vector<bench::EgoVariant>& variants) {
   std::vector<double> pos_t2, speed_t2;  // on passing trigger point 2
   std::vector<double> held_up;  // s, per run
-  std::vector<double> pos, speed, est, a_beside, o_beside, slowed, waits, beyond;
+  std::vector<double> pos, speed, est, a_beside, o_beside, slowed, waits, beyond, actor_held_up;
+  double actor_held_up_s = 0.0, actor_held_up_by_commanded_s = 0.0;
   ExtremesOverRuns actors, cleared, autonomous;
   int taken_off = 0, taken_off_in_view = 0, taken_off_for_room = 0;
   int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
@@ -113,6 +114,9 @@ void print_play(const std::string& name, const PlayConfig& play, const std::vect
     cleared.add(r.cleared);
     autonomous.add(r.autonomous);
     a_beside.push_back(r.actor_beside_ego_s);
+    actor_held_up.push_back(r.actor_held_up_s);
+    actor_held_up_s += r.actor_held_up_s;
+    actor_held_up_by_commanded_s += r.actor_held_up_by_commanded_s;
     if (r.traffic_slowed_to() > 0.0) slowed.push_back(r.traffic_slowed_to());
     o_beside.push_back(r.autonomous_beside_ego_s);
     off_commanded.add(r.called_off_commanded);
@@ -175,6 +179,11 @@ void print_play(const std::string& name, const PlayConfig& play, const std::vect
               "  actors      %.1f / %.1f / %.1f s\n  autonomous  %.1f / %.1f / %.1f s\n",
               bench::kBesideEgo_m, percentile(a_beside, 0.5), percentile(a_beside, 0.95), percentile(a_beside, 1.0),
               percentile(o_beside, 0.5), percentile(o_beside, 0.95), percentile(o_beside, 1.0));
+  std::printf("actors held up in their lane while preparing (over %.0f m/s below the desired speed given, within %.0f s\n"
+              "  of a leader), per run: median / p95 / max %.1f / %.1f / %.1f s; behind one under a command %.0f %% of it\n",
+              bench::kHeldUpBelow_mps, bench::kHeldUpWithin_s, percentile(actor_held_up, 0.5),
+              percentile(actor_held_up, 0.95), percentile(actor_held_up, 1.0),
+              actor_held_up_s > 0.0 ? 100.0 * actor_held_up_by_commanded_s / actor_held_up_s : 0.0);
   std::printf("vehicles the ego passed on the right, trigger point 1 to 2 (it in a lane right of theirs)\n"
               "  with the director     %d (%d under its command) in %d runs\n"
               "  without the director  %d in %d runs\n",
@@ -259,12 +268,12 @@ void print_run_line(int index, const RunOutcome& o) {
   const bench::PlayRunResult& r = o.result;
   std::printf("run %d seed %llu %-12s %-11s pos %6.1f m speed %5.1f km/h estimate %+6.1f s waited %4.1f s created %d "
               "overlaps %d/%d held up %4.1f s beside %4.1f s traffic %4.2f right %d/%d actors' decel %3.1f m/s2 "
-              "ego lane changes %d%s  %s\n",
+              "actors held up %4.1f s ego lane changes %d%s  %s\n",
               index, static_cast<unsigned long long>(o.seed), bench::to_string(o.variant),
               director::to_string(r.final_phase), r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s,
               r.handover_wait_s, r.created, r.overlaps_with_actor, r.overlaps_other, r.held_up_s, r.actor_beside_ego_s,
               r.traffic_slowed_to(), r.passed_on_right.total(), r.passed_on_right_undirected.total(),
-              r.actors.max_decel_mps2, r.ego_lane_changes, r.mirrored_at_trigger2 ? " mirrored" : "", r.failure.c_str());
+              r.actors.max_decel_mps2, r.actor_held_up_s, r.ego_lane_changes, r.mirrored_at_trigger2 ? " mirrored" : "", r.failure.c_str());
 }
 
 int run(int argc, char** argv) {

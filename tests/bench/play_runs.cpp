@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <utility>
 
@@ -54,6 +55,30 @@ double bumper_gap_m(const ObservedVehicle& a, const ObservedVehicle& b) {
 constexpr Step kTrafficTraceSteps = 20;
 constexpr double kTraceBehind_m = 300.0;
 constexpr double kTraceAhead_m = 600.0;
+
+// The nearest vehicle ahead of `v` in its lane, the ego included: the gap to it (bumper to bumper)
+// and whether it is under a director's command; nullopt: nobody ahead.
+struct LeaderGap {
+  double gap_m = 0.0;
+  bool commanded = false;
+};
+std::optional<LeaderGap> leader_gap(const ObservedVehicle& v, const std::vector<ObservedVehicle>& world,
+                                    const EgoObservation& ego) {
+  const double p = v.progress_m();
+  std::optional<LeaderGap> nearest;
+  auto consider = [&](double q, double length_m, bool commanded) {
+    if (q <= p) return;
+    const double gap_m = q - 0.5 * length_m - (p + 0.5 * v.length_m);
+    if (!nearest || gap_m < nearest->gap_m) nearest = LeaderGap{gap_m, commanded};
+  };
+  for (const ObservedVehicle& o : world) {
+    if (o.id != v.id && o.direction == v.direction && o.lane == v.lane) {
+      consider(o.progress_m(), o.length_m, o.control != ControlMode::kAutonomous);
+    }
+  }
+  if (ego.direction == v.direction && ego.lane == v.lane) consider(ego.progress_m(), ego.length_m, false);
+  return nearest;
+}
 
 const char* control_mark(ControlMode m) {
   switch (m) {
@@ -287,6 +312,19 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
                            r.final_phase == director::PlayPhase::kTransporting;
     const std::vector<ObservedVehicle>& world = in.world_prev;  // published for k - 1
     const std::vector<VehicleId> actors = cores.director().plays().front().actors();
+    // The actors held up behind a leader in their lane (the ego as it was for that world).
+    for (VehicleId id : actors) {
+      const auto v = std::find_if(world.begin(), world.end(), [&](const ObservedVehicle& o) { return o.id == id; });
+      const auto cmd = last_commands.find(id);
+      if (!preparing || v == world.end() || v->control != ControlMode::kTransported || cmd == last_commands.end() ||
+          cmd->second.speed_mps == kOwnDesiredSpeed_mps || v->speed_mps >= cmd->second.speed_mps - kHeldUpBelow_mps) {
+        continue;
+      }
+      const std::optional<LeaderGap> lead = leader_gap(*v, world, in.ego_prev ? *in.ego_prev : in.ego);
+      if (!lead || lead->gap_m > kHeldUpWithin_s * v->speed_mps) continue;
+      r.actor_held_up_s += dt;
+      if (lead->commanded) r.actor_held_up_by_commanded_s += dt;
+    }
     for (const ObservedVehicle& v : world) {
       if (v.owner.role != Role::kMicro) {
         last_accel.erase(v.id);

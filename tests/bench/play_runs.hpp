@@ -134,6 +134,13 @@ struct PlayRunResult {
   // director's command, and an autonomous one. A driver notices a car that paces them.
   double actor_beside_ego_s = 0.0;
   double autonomous_beside_ego_s = 0.0;
+  // How long the play's actors drove held up while it was prepared: more than kHeldUpBelow_mps
+  // below the desired speed the director last gave them, within kHeldUpWithin_s (at their speed)
+  // of a leader in their lane, the ego included; and of that, how long that leader was itself
+  // under a director's command (stop 65: the cutters of most failed cut-ins spent 10 s or more so,
+  // mostly behind vehicles the director was moving).
+  double actor_held_up_s = 0.0;
+  double actor_held_up_by_commanded_s = 0.0;
   // The vehicles the ego passed on the right from trigger point 1 to 2 (RightPasses), and in the
   // same run without the director (filled by the caller).
   RightPasses passed_on_right;
@@ -174,6 +181,10 @@ struct PlayRunResult {
 };
 
 inline constexpr double kBesideEgo_m = 15.0;
+// An actor held up (PlayRunResult::actor_held_up_s): this much below its desired speed, this close
+// (in seconds at its speed, bumper to bumper) behind its leader.
+inline constexpr double kHeldUpBelow_mps = 2.0;
+inline constexpr double kHeldUpWithin_s = 2.0;
 
 // Whether `play`, staged beside the lane `ego` is in or moving to, is mirrored (the director's
 // own decision, stage.hpp, mirrored_beside).
