@@ -273,7 +273,8 @@ void print_run_line(int index, const RunOutcome& o) {
               director::to_string(r.final_phase), r.position_error_m, 3.6 * r.speed_error_mps, r.estimate_error_s,
               r.handover_wait_s, r.created, r.overlaps_with_actor, r.overlaps_other, r.held_up_s, r.actor_beside_ego_s,
               r.traffic_slowed_to(), r.passed_on_right.total(), r.passed_on_right_undirected.total(),
-              r.actors.max_decel_mps2, r.actor_held_up_s, r.ego_lane_changes, r.mirrored_at_trigger2 ? " mirrored" : "", r.failure.c_str());
+              r.actors.max_decel_mps2, r.actor_held_up_s, r.ego_lane_changes, r.mirrored_at_trigger2 ? " mirrored" : "",
+              r.failure.c_str());
 }
 
 int run(int argc, char** argv) {

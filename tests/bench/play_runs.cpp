@@ -56,30 +56,6 @@ constexpr Step kTrafficTraceSteps = 20;
 constexpr double kTraceBehind_m = 300.0;
 constexpr double kTraceAhead_m = 600.0;
 
-// The nearest vehicle ahead of `v` in its lane, the ego included: the gap to it (bumper to bumper)
-// and whether it is under a director's command; nullopt: nobody ahead.
-struct LeaderGap {
-  double gap_m = 0.0;
-  bool commanded = false;
-};
-std::optional<LeaderGap> leader_gap(const ObservedVehicle& v, const std::vector<ObservedVehicle>& world,
-                                    const EgoObservation& ego) {
-  const double p = v.progress_m();
-  std::optional<LeaderGap> nearest;
-  auto consider = [&](double q, double length_m, bool commanded) {
-    if (q <= p) return;
-    const double gap_m = q - 0.5 * length_m - (p + 0.5 * v.length_m);
-    if (!nearest || gap_m < nearest->gap_m) nearest = LeaderGap{gap_m, commanded};
-  };
-  for (const ObservedVehicle& o : world) {
-    if (o.id != v.id && o.direction == v.direction && o.lane == v.lane) {
-      consider(o.progress_m(), o.length_m, o.control != ControlMode::kAutonomous);
-    }
-  }
-  if (ego.direction == v.direction && ego.lane == v.lane) consider(ego.progress_m(), ego.length_m, false);
-  return nearest;
-}
-
 const char* control_mark(ControlMode m) {
   switch (m) {
     case ControlMode::kAutonomous: return "";
@@ -124,6 +100,24 @@ void trace_traffic(std::FILE* out, const StepInput& in, const std::map<VehicleId
   std::fprintf(out, "\n");
 }
 }  // namespace
+
+std::optional<LeaderGap> leader_gap(const ObservedVehicle& v, const std::vector<ObservedVehicle>& world,
+                                    const EgoObservation& ego) {
+  const double p = v.progress_m();
+  std::optional<LeaderGap> nearest;
+  auto consider = [&](double q, double length_m, bool commanded) {
+    if (q <= p) return;
+    const double gap_m = q - 0.5 * length_m - (p + 0.5 * v.length_m);
+    if (!nearest || gap_m < nearest->gap_m) nearest = LeaderGap{gap_m, commanded};
+  };
+  for (const ObservedVehicle& o : world) {
+    if (o.id != v.id && o.direction == v.direction && o.lane == v.lane) {
+      consider(o.progress_m(), o.length_m, o.control != ControlMode::kAutonomous);
+    }
+  }
+  if (ego.direction == v.direction && ego.lane == v.lane) consider(ego.progress_m(), ego.length_m, false);
+  return nearest;
+}
 
 const char* to_string(EgoVariant v) {
   switch (v) {

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -185,6 +186,15 @@ inline constexpr double kBesideEgo_m = 15.0;
 // (in seconds at its speed, bumper to bumper) behind its leader.
 inline constexpr double kHeldUpBelow_mps = 2.0;
 inline constexpr double kHeldUpWithin_s = 2.0;
+
+// The nearest vehicle ahead of `v` in its lane, the ego included: the gap to it (bumper to bumper)
+// and whether it is under a director's command; nullopt: nobody ahead.
+struct LeaderGap {
+  double gap_m = 0.0;
+  bool commanded = false;
+};
+std::optional<LeaderGap> leader_gap(const ObservedVehicle& v, const std::vector<ObservedVehicle>& world,
+                                    const EgoObservation& ego);
 
 // Whether `play`, staged beside the lane `ego` is in or moving to, is mirrored (the director's
 // own decision, stage.hpp, mirrored_beside).
