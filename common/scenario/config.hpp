@@ -240,7 +240,7 @@ struct DirectorConfig {
   double lane_change_cost_mps = 2.0;    // casting: cost of each lane change, as a speed change
   double hidden_margin_m = 50.0;        // created vehicles: at least this far beyond the inner region
   double beside_wait_ahead_m = 50.0;    // transport: a role beside the ego waits this far ahead of its start
-  double beside_approach_s = 20.0;      // transport: ... until this long before the start
+  double beside_approach_s = 25.0;      // transport: ... until this long before the start
   double oncoming_gap_m = 800.0;        // one lane per direction: oncoming vehicles out of sight are
                                         // taken off over the ego's first metres of preparation (0: never)
 };

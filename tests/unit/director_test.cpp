@@ -23,14 +23,14 @@ TEST(Staging, ARoleBesideTheEgoWaitsAheadOfItsStartUntilTheApproach) {
   PlayConfig play = lead_play();
   play.roles[0].lane_offset = 1;  // a cutter 12 m ahead in the lane left of the ego
   play.roles[0].ahead_m = 12.0;
-  const DirectorConfig cfg;  // waits 50 m ahead until 20 s before the start
+  const DirectorConfig cfg;  // waits 50 m ahead until 25 s before the start
   const Lanes lanes{2, 0};
   const Aim aim = at_trigger2(play, 25.0);
   const Slot slot = slots_of(play, Direction::kForward, 0, aim, lanes)[0];
-  // 60 s before the start: aimed at where its start is 20 s before it, 50 m further on, by then.
+  // 60 s before the start: aimed at where its start is 25 s before it, 50 m further on, by then.
   const Waypoint early = way_to(slot, aim, play.roles[0], Direction::kForward, 0, lanes, 60.0, cfg);
-  EXPECT_DOUBLE_EQ(early.time_s, 40.0);
-  EXPECT_DOUBLE_EQ(early.slot.s_m, slot.s_m + 50.0 - 25.0 * 20.0);
+  EXPECT_DOUBLE_EQ(early.time_s, 35.0);
+  EXPECT_DOUBLE_EQ(early.slot.s_m, slot.s_m + 50.0 - 25.0 * 25.0);
   EXPECT_EQ(early.slot.lane, slot.lane);
   EXPECT_DOUBLE_EQ(early.slot.speed_mps, slot.speed_mps);
   // Within the approach: the start itself.

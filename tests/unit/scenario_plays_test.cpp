@@ -213,7 +213,7 @@ TEST(ScenarioPlays, DirectorDefaultsAreTheSchemas) {
   EXPECT_NEAR(dc.lane_change_cost_mps, 2.0, 1e-12);
   EXPECT_DOUBLE_EQ(dc.hidden_margin_m, 50.0);
   EXPECT_DOUBLE_EQ(dc.beside_wait_ahead_m, 50.0);
-  EXPECT_DOUBLE_EQ(dc.beside_approach_s, 20.0);
+  EXPECT_DOUBLE_EQ(dc.beside_approach_s, 25.0);
   const DirectorConfig plain;  // the C++ defaults agree
   EXPECT_DOUBLE_EQ(plain.beside_wait_ahead_m, dc.beside_wait_ahead_m);
   EXPECT_DOUBLE_EQ(plain.beside_approach_s, dc.beside_approach_s);
