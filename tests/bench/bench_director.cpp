@@ -76,6 +76,7 @@ void print_play(const std::string& name, const PlayConfig& play, const std::vect
   int taken_off = 0, taken_off_in_view = 0, taken_off_for_room = 0;
   int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
   bench::SignalsCalledOff off_commanded, off_autonomous;
+  bench::LaneChangesMade changes_commanded, changes_autonomous;
   bench::AboveTopSpeed above_commanded, above_autonomous;
   bench::RightPasses right, right_undirected;
   int runs_right = 0, runs_right_undirected = 0;  // runs in which the ego passed any on the right
@@ -125,6 +126,8 @@ void print_play(const std::string& name, const PlayConfig& play, const std::vect
     runs_right += r.passed_on_right.total() > 0 ? 1 : 0;
     runs_right_undirected += r.passed_on_right_undirected.total() > 0 ? 1 : 0;
     off_autonomous.add(r.called_off_autonomous);
+    changes_commanded.add(r.lane_changes_commanded);
+    changes_autonomous.add(r.lane_changes_autonomous);
     above_commanded.add(r.above_top_commanded);
     above_autonomous.add(r.above_top_autonomous);
     created += r.created;
@@ -198,6 +201,13 @@ void print_play(const std::string& name, const PlayConfig& play, const std::vect
               "  autonomous  %d in %.1f vehicle-hours (%.1f per vehicle-hour)\n",
               off_commanded.count, off_commanded.vehicle_s / 3600.0, off_commanded.per_vehicle_hour(),
               off_autonomous.count, off_autonomous.vehicle_s / 3600.0, off_autonomous.per_vehicle_hour());
+  std::printf("lane changes made (inner region, while preparing); the most by one vehicle in a run, and the runs in which one made %d or more\n"
+              "  commanded   %d in %.1f vehicle-hours (%.1f per vehicle-hour); most %d, %d runs\n"
+              "  autonomous  %d in %.1f vehicle-hours (%.1f per vehicle-hour); most %d, %d runs\n",
+              bench::kManyLaneChanges, changes_commanded.count, changes_commanded.vehicle_s / 3600.0,
+              changes_commanded.per_vehicle_hour(), changes_commanded.most_by_one, changes_commanded.runs_with_many,
+              changes_autonomous.count, changes_autonomous.vehicle_s / 3600.0, changes_autonomous.per_vehicle_hour(),
+              changes_autonomous.most_by_one, changes_autonomous.runs_with_many);
   std::printf("indicator on, per signal that went off in view: median / p95 / max\n"
               "  commanded   %.1f / %.1f / %.1f s   (%zu signals)\n  autonomous  %.1f / %.1f / %.1f s   (%zu signals)\n",
               percentile(off_commanded.signal_s, 0.5), percentile(off_commanded.signal_s, 0.95),

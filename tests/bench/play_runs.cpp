@@ -177,6 +177,31 @@ void RightPassCounter::observe(const EgoObservation& ego, const std::vector<Obse
   ahead_m_ = std::move(ahead_now);
 }
 
+void LaneChangeCounter::observe(const ObservedVehicle& v, double dt_s) {
+  const bool commanded = v.control == ControlMode::kTransported;
+  if (!commanded && v.control != ControlMode::kAutonomous) {
+    forget(v.id);
+    return;
+  }
+  (commanded ? commanded_s_ : autonomous_s_) += dt_s;
+  const auto before = last_.find(v.id);
+  if (before != last_.end() && before->second.second == v.control && before->second.first != v.lane) {
+    ++(commanded ? made_commanded_ : made_autonomous_)[v.id];
+  }
+  last_[v.id] = {v.lane, v.control};
+}
+
+LaneChangesMade LaneChangeCounter::made(const std::map<VehicleId, int>& by_vehicle, double vehicle_s) {
+  LaneChangesMade m;
+  m.vehicle_s = vehicle_s;
+  for (const auto& [id, n] : by_vehicle) {
+    m.count += n;
+    m.most_by_one = std::max(m.most_by_one, n);
+  }
+  m.runs_with_many = m.most_by_one >= kManyLaneChanges ? 1 : 0;
+  return m;
+}
+
 namespace {
 // Has the ego of `in` reached road position `s_m` (along its direction)?
 bool ego_passed(const StepInput& in, double s_m) { return in.ego.progress_m() >= sign(in.ego.direction) * s_m; }
@@ -224,6 +249,7 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
     double since_s = 0.0;  // and when
   };
   std::map<VehicleId, SignalOn> signal_lane;  // vehicles signalling now
+  LaneChangeCounter lane_changes;
   SpeedTally around_ego;                         // trigger point 1 to 2
   RightPassCounter right_passes;                 // the same
   double first_estimate_s = -1.0;
@@ -344,13 +370,15 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
       if (excess <= 0.0) continue;
       (v.control == ControlMode::kTransported ? r.above_top_commanded : r.above_top_autonomous).add_step(excess, dt);
     }
-    // Indicators on and off again in the same lane (inner region, while preparing).
+    // Indicators on and off again in the same lane, and lane changes made (inner region, while preparing).
     for (const ObservedVehicle& v : world) {
       if (!preparing || v.owner.role != Role::kMicro || !w.in_inner(v.s_m) || v.control == ControlMode::kControlled ||
           v.control == ControlMode::kReleasing) {
         signal_lane.erase(v.id);
+        lane_changes.forget(v.id);
         continue;
       }
+      lane_changes.observe(v, dt);
       SignalsCalledOff& kind = v.control == ControlMode::kAutonomous ? r.called_off_autonomous : r.called_off_commanded;
       kind.vehicle_s += dt;
       const auto on = signal_lane.find(v.id);
@@ -404,6 +432,8 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
     r.steps = k;
     if (end_time_s >= 0.0 && in.ego.time_s >= end_time_s) break;
   }
+  r.lane_changes_commanded = lane_changes.commanded();
+  r.lane_changes_autonomous = lane_changes.autonomous();
   return r;
 }
 

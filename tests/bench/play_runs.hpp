@@ -85,6 +85,45 @@ class RightPassCounter {
   std::map<VehicleId, double> ahead_m_;  // last step's lead over the ego of each vehicle left of it
 };
 
+// Lane changes made in the inner region while a play is prepared, by vehicles under a director's
+// transport command and by autonomous ones: a vehicle counts one when its lane differs from the
+// one it had the step before as the same kind (a change counts as its lateral movement ends).
+// Per run, the most one vehicle made: a vehicle sent back and forth between two lanes by two of
+// the director's rules shows there (cut-in seed 145, stop 66: seven changes in 47 s).
+inline constexpr int kManyLaneChanges = 3;
+struct LaneChangesMade {
+  int count = 0;
+  double vehicle_s = 0.0;  // time the vehicles of this kind spent in the inner region
+  int most_by_one = 0;     // by one vehicle in a run (over several runs: the largest)
+  int runs_with_many = 0;  // runs in which one vehicle made kManyLaneChanges or more
+  void add(const LaneChangesMade& o) {
+    count += o.count;
+    vehicle_s += o.vehicle_s;
+    most_by_one = std::max(most_by_one, o.most_by_one);
+    runs_with_many += o.runs_with_many;
+  }
+  double per_vehicle_hour() const { return vehicle_s > 0.0 ? 3600.0 * count / vehicle_s : 0.0; }
+};
+class LaneChangeCounter {
+ public:
+  // One step of a vehicle that is to be counted (in the inner region while preparing; a vehicle
+  // controlled by a script or being released is not, and forgotten).
+  void observe(const ObservedVehicle& v, double dt_s);
+  // A vehicle not counted at this step: its next change is not one made in view.
+  void forget(VehicleId id) { last_.erase(id); }
+  // The run's figures for each kind.
+  LaneChangesMade commanded() const { return made(made_commanded_, commanded_s_); }
+  LaneChangesMade autonomous() const { return made(made_autonomous_, autonomous_s_); }
+
+ private:
+  static LaneChangesMade made(const std::map<VehicleId, int>& by_vehicle, double vehicle_s);
+  std::map<VehicleId, std::pair<int, ControlMode>> last_;  // lane and control at the last step counted
+  std::map<VehicleId, int> made_commanded_;
+  std::map<VehicleId, int> made_autonomous_;
+  double commanded_s_ = 0.0;
+  double autonomous_s_ = 0.0;
+};
+
 // Vehicles in view faster than any driver of their type wishes to drive (the scenario's highest
 // desired speed of the type, `desired_speed_kph { max }`): a truck at 127 km/h where trucks wish
 // 95 at most is not everyday traffic, whoever asked it to.
@@ -164,6 +203,8 @@ struct PlayRunResult {
   AboveTopSpeed above_top_commanded;
   AboveTopSpeed above_top_autonomous;
   SignalsCalledOff called_off_autonomous;
+  LaneChangesMade lane_changes_commanded;
+  LaneChangesMade lane_changes_autonomous;
   // The ego's lane changes begun between trigger points 1 and 2 (on a two-lane road, its passes in
   // the oncoming lane), and whether it passed trigger point 2 in a lane beside which the play is
   // staged mirrored (director/core/stage.hpp, staged_beside: a cut-in's cutter then comes from the
