@@ -201,7 +201,7 @@ void print_play(const std::string& name, const PlayConfig& play, const std::vect
               "  autonomous  %d in %.1f vehicle-hours (%.1f per vehicle-hour)\n",
               off_commanded.count, off_commanded.vehicle_s / 3600.0, off_commanded.per_vehicle_hour(),
               off_autonomous.count, off_autonomous.vehicle_s / 3600.0, off_autonomous.per_vehicle_hour());
-  std::printf("lane changes made (inner region, while preparing); the most by one vehicle in a run, and the runs in which one made %d or more\n"
+  std::printf("lane changes made (inner region, while preparing); most by one vehicle in a run, runs in which one made %d+\n"
               "  commanded   %d in %.1f vehicle-hours (%.1f per vehicle-hour); most %d, %d runs\n"
               "  autonomous  %d in %.1f vehicle-hours (%.1f per vehicle-hour); most %d, %d runs\n",
               bench::kManyLaneChanges, changes_commanded.count, changes_commanded.vehicle_s / 3600.0,
