@@ -187,6 +187,54 @@ TEST(Clearing, AnActorWaitingToMoveIntoItsStartsLaneIsLetInByTheOneJustBehindItT
   EXPECT_FALSE(not_signalling.has_value() && not_signalling->speed_mps == 25.0 - kLetIn_mps);
 }
 
+// An actor beside its start that waits to move into its start's lane lets in a vehicle of the
+// director's that must leave the actor's room there for the actor's lane: the two swap lanes
+// (lead vehicle, seeds 9, 37 and 66, stop 67: a truck at its type's top speed, the ego's leader,
+// stood in the lead's room, and the lead beside it waited until the handover failed). The actor
+// holds back below the waiting one's speed until it has moved over, then goes on its way.
+TEST(Clearing, AnActorBesideItsStartLetsInTheVehicleInItsRoomThatMustTakeTheActorsLane) {
+  ScenarioConfig sc = with_trucks(testing::minimal_scenario(), 25.0);
+  PlayConfig play = lead_play();
+  play.roles[0].type_index = 0;  // a car
+  play.clear = {{0, 3.0, 37.0}};
+  sc.plays = {play};
+  DirectorCore core(sc, 1);
+  StepInput in;
+  ObservedVehicle lead = vehicle(7, 2040.0, 25.0, 1);  // beside its start, 40 m ahead of the ego
+  ObservedVehicle truck = vehicle(8, 2064.0, 25.0, 0);  // at its top speed, in the lead's room
+  truck.type_index = 1;
+  truck.length_m = 12.0;
+  std::map<VehicleId, ActorControl> sent;
+  auto step = [&](Step k) {
+    in.step = k;
+    in.ego = testing::ego_at(k, 2000.0 + 2.5 * static_cast<double>(k), 25.0);
+    lead.s_m = in.ego.s_m + 40.0;
+    truck.s_m = in.ego.s_m + 64.0;
+    in.world_prev = {lead, truck};
+    for (const ActorCommand& c : core.step(in).commands) sent[c.vehicle] = c.control;
+  };
+  for (Step k = 0; k < 3; ++k) step(k);  // trigger point 1; cast; transporting and clearing
+  ASSERT_EQ(sent.count(7), 1u);
+  ASSERT_EQ(sent.count(8), 1u);
+  EXPECT_EQ(sent.at(7).lane, 0);  // the lead to its start's lane
+  EXPECT_EQ(sent.at(8).lane, 1);  // the truck out of the lead's room, into the lead's lane
+  const double lead_mps = sent.at(7).speed_mps;
+  EXPECT_GT(lead_mps, 25.0 - kLetIn_mps);
+  // Both signal and wait: the lead holds back for the truck.
+  lead.indicator = 2;   // right
+  truck.indicator = 1;  // left
+  step(3);
+  step(4);
+  EXPECT_LE(sent.at(7).speed_mps, 25.0 - kLetIn_mps + 1e-9);
+  EXPECT_EQ(sent.at(7).lane, 0);
+  EXPECT_EQ(sent.at(8).lane, 1);
+  // The truck moves over: the lead goes on its way.
+  truck.target_lane = 1;
+  step(5);
+  step(6);
+  EXPECT_GT(sent.at(7).speed_mps, 25.0 - kLetIn_mps);
+}
+
 // On one lane per direction a vehicle that passes the ego during the preparation is caught between
 // it and an actor ahead of it: the vehicles behind the ego in its lane, within the inner region,
 // keep their lane (pass nobody) while a zone lies ahead of the ego; not on a road with a second

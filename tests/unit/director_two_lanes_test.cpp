@@ -216,7 +216,7 @@ TEST_F(EgoInTheRightLaneOfTwo, AVehicleInTheZoneBehindTheCutterFallsBackByTheSta
   EXPECT_LT(back->speed_mps, car.speed_mps);
 }
 
-TEST_F(EgoInTheRightLaneOfTwo, AVehicleNeverMovesOutOfAZoneIntoALaneWhereAnActorIsAlongsideIt) {
+TEST_F(EgoInTheRightLaneOfTwo, AVehicleMovesBesideAnActorOnlyToSwapLanesWithItWhenItCannotGetOutBySpeed) {
   // 20 s before a lead play's start (ego then at 2500 m): the ego's lane a zone from 3 to 37 m
   // ahead and the lead's room from 2535.75 to 2572.25 m. A car 51 m ahead of the ego would stand
   // in the room; the left lane is free of zones and roles. With the lead beside it there (14 m
@@ -236,6 +236,29 @@ TEST_F(EgoInTheRightLaneOfTwo, AVehicleNeverMovesOutOfAZoneIntoALaneWhereAnActor
   const auto far = clear({{1, 1960.0, 25.0}});
   ASSERT_TRUE(far.has_value());
   EXPECT_EQ(far->lane, 1);
+  // The lead beside it in place, waiting to move into the car's lane, its start's
+  // (lane_waited_for): the car still gets ahead of the room by its speed first, which holds nobody
+  // back. A truck at its type's top speed cannot: the two swap lanes, the lead letting it in
+  // (PlayRun::let_in). Kept apart, such a truck stood in the lead's room and the lead waited beside
+  // it until the handover failed (stop 67).
+  const std::vector<ActorPlace> lead_waits{{1, 2037.0, 25.0, 4.5, 0}};
+  const auto ahead = clear(lead_waits);
+  ASSERT_TRUE(ahead.has_value());
+  EXPECT_EQ(ahead->lane, 0);
+  EXPECT_GT(ahead->speed_mps, car.speed_mps);
+  const TypeTable types{{1.4, true, 160.0 / 3.6}, {0.6, true, 25.0}};
+  ObservedVehicle at_top = car;
+  at_top.type_index = 1;
+  auto clear_at_top = [&](std::vector<ActorPlace> actors) {
+    return clear_out(at_top, ClearingSituation{zones, 20.0, ego, 2500.0, roles, lanes, cfg, std::move(actors), types});
+  };
+  const auto swap = clear_at_top(lead_waits);
+  ASSERT_TRUE(swap.has_value());
+  EXPECT_EQ(swap->lane, 1);
+  EXPECT_DOUBLE_EQ(swap->speed_mps, 25.0);  // the edge of the band its own lane's way asked for
+  const auto no_swap = clear_at_top({{1, 2037.0, 25.0}});
+  ASSERT_TRUE(no_swap.has_value());
+  EXPECT_EQ(no_swap->lane, 0);
   // The room is the actor's own (its length, not the vehicle's): a truck (16.5 m) whose rear is
   // 33.75 m ahead of the lead's centre is out of the lead's room (32.25 m ahead of it) and moves
   // over. With the truck's length taken for the lead's, the room reached 6 m further, and the
@@ -250,6 +273,24 @@ TEST_F(EgoInTheRightLaneOfTwo, AVehicleNeverMovesOutOfAZoneIntoALaneWhereAnActor
   const auto in_room = clear_out(truck, lead_beside);
   ASSERT_TRUE(in_room.has_value());
   EXPECT_EQ(in_room->lane, 0);
+}
+
+TEST_F(EgoInTheRightLaneOfTwo, AnActorWaitsForItsStartsLaneOnlyInPlaceBesideItAndNotYetMovingOver) {
+  // The lead's start in the right lane at 2540 m, 20 s from now. An actor in the left lane at the
+  // ego's speed 40 m ahead is there by then: it waits for lane 0. Not one 12 m further back (on its
+  // way still), nor one that is moving over already, nor one in the start's lane.
+  const Slot start{Direction::kForward, 0, 2540.0, 25.0};
+  const ObservedVehicle beside = vehicle(7, 2040.0, 25.0, 1);
+  EXPECT_EQ(lane_waited_for(beside, start, 20.0), 0);
+  ObservedVehicle on_its_way = beside;
+  on_its_way.s_m = 2028.0;
+  EXPECT_EQ(lane_waited_for(on_its_way, start, 20.0), -1);
+  on_its_way.speed_mps = 25.6;  // but it closes the 12 m by then
+  EXPECT_EQ(lane_waited_for(on_its_way, start, 20.0), 0);
+  ObservedVehicle moving_over = beside;
+  moving_over.target_lane = 0;
+  EXPECT_EQ(lane_waited_for(moving_over, start, 20.0), -1);
+  EXPECT_EQ(lane_waited_for(vehicle(7, 2040.0, 25.0, 0), start, 20.0), -1);
 }
 
 TEST_F(EgoInTheRightLaneOfTwo, AVehicleInAnActorsLaneIsClearedOnlyOnItsOwnSideOfTheActor) {

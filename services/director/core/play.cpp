@@ -88,6 +88,13 @@ const ObservedVehicle* PlayRun::find(const PlayInput& in, VehicleId id) const {
   return it != in.world.end() && it->id == id ? &*it : nullptr;
 }
 
+const ObservedVehicle* PlayRun::let_in_by(const PlayInput& in, VehicleId id) const {
+  for (const auto& [waiting, follower] : letting_in_) {
+    if (follower == id) return find(in, waiting);
+  }
+  return nullptr;
+}
+
 bool PlayRun::is_cleared(VehicleId id) const {
   return std::find(cleared_.begin(), cleared_.end(), id) != cleared_.end();
 }
@@ -350,6 +357,10 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, c
     // play_clearing.cpp), unless the play asks its start speed above that: the desired speed given
     // to speed an actor up (drive_speed_mps) reached 181 km/h for cars that wish 150 at most.
     t.drive_mps = std::min(t.drive_mps, std::max(top_speed_of(setting_.types, v->type_index), slots[r].speed_mps));
+    // Letting a cleared vehicle into its lane (let_in), it holds back below that one's speed.
+    if (const ObservedVehicle* let = let_in_by(in, v->id)) {
+      t.drive_mps = std::min(t.drive_mps, std::max(0.0, let->speed_mps - kLetIn_mps));
+    }
     role.command_mps = t.speed_mps;
     role.position_error_m = t.position_error_m;
     role.speed_error_mps = t.speed_error_mps;

@@ -169,8 +169,9 @@ class PlayRun {
                    PlayOutput& out);
   // Vehicles waiting to change into a lane they were asked for are let in (transport.hpp,
   // follower_to_let_in); a vehicle that let one in drives on at its own speed in its lane.
-  // `slots`: the roles' starts (an actor leaving the ego's lane for its start's is let in too).
-  void let_in(const PlayInput& in, const std::vector<Slot>& slots, PlayOutput& out);
+  // `slots`: the roles' starts, `time_left_s` from now (an actor leaving the ego's lane for its
+  // start's is let in too; one in place beside its start lets in the vehicle it swaps lanes with).
+  void let_in(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out);
   // On one lane per direction, with a clear zone ahead of the ego in its lane: the vehicles behind
   // the ego in its lane, within the inner region, keep their lane (pass nobody) until the
   // handover. Nothing gets out from between the ego and an actor ahead of it there (casting.hpp,
@@ -226,6 +227,8 @@ class PlayRun {
   // (transport.hpp, keeps_lane_request).
   bool holds_lane_request(const ObservedVehicle& v, int lane, double now_s) const;
   bool holding_back(VehicleId id) const;  // holds back to let another in (let_in)
+  // The vehicle `id` holds back for (let_in), if any.
+  const ObservedVehicle* let_in_by(const PlayInput& in, VehicleId id) const;
   // Notes a lane change asked of `v` by `c` (one in its own lane ends a request).
   void note_lane_request(const ObservedVehicle& v, const ActorControl& c, double now_s);
   // What keeps the start condition from holding now ("" : nothing); sets the roles' errors.

@@ -61,9 +61,11 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   std::vector<ZoneAtStart> to_clear = slot_zones(slots, lengths, in.ego.direction);
   to_clear.insert(to_clear.end(), zones.begin(), zones.end());
   std::vector<ActorPlace> actors;
-  for (const Role& r : roles_) {
-    const ObservedVehicle* v = r.actor == kNoVehicle ? nullptr : find(in, r.actor);
-    if (v != nullptr && v->direction == in.ego.direction) actors.push_back({v->target_lane, v->s_m, v->speed_mps, v->length_m});
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
+    const ObservedVehicle* v = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    if (v != nullptr && v->direction == in.ego.direction) {
+      actors.push_back({v->target_lane, v->s_m, v->speed_mps, v->length_m, lane_waited_for(*v, slots[r], aim.time_s)});
+    }
   }
   const ClearingSituation situation{to_clear, aim.time_s,     in.ego,           aim.ego_s_m,
                                     slots,    setting_.lanes, setting_.director, actors,
@@ -105,7 +107,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
       }
     }
   }
-  let_in(in, slots, out);
+  let_in(in, slots, aim.time_s, out);
   hold_followers(in, out);
   if (time_to_start_s > kHoldLanesBefore_s) return;
   // Shortly before the start, vehicles beside a zone keep their lane (at their own speed), so that
@@ -262,7 +264,7 @@ void PlayRun::hold_followers(const PlayInput& in, PlayOutput& out) {
   }
 }
 
-void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, PlayOutput& out) {
+void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
   // The lane `id` was asked to change into while it has not started moving there; -1 otherwise.
   auto waiting_for_lane = [&](VehicleId id) {
     const auto cmd = sent_.find(id);
@@ -272,10 +274,17 @@ void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, PlayOu
     const bool waits = lane >= 0 && v->lane == v->target_lane && v->lane != lane && v->indicator != 0;
     return waits ? lane : -1;
   };
-  // A vehicle that held back drives on as it likes, in its lane.
+  // The role `id` plays (roles_.size(): none).
+  auto role_of = [&](VehicleId id) {
+    std::size_t r = 0;
+    while (r < roles_.size() && roles_[r].actor != id) ++r;
+    return r;
+  };
+  // A vehicle that held back drives on as it likes, in its lane (an actor goes on its way:
+  // move_actors).
   auto stop_holding_back = [&](VehicleId id) {
     const ObservedVehicle* v = find(in, id);
-    if (v == nullptr) return;
+    if (v == nullptr || role_of(id) < roles_.size()) return;
     lane_requests_.erase(id);
     command(id, transported(kOwnDesiredSpeed_mps, v->lane), in.step, out);
   };
@@ -321,8 +330,19 @@ void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, PlayOu
     }
     const auto i = static_cast<std::size_t>(f - in.world.data());
     const bool for_it_already = before != letting_in_.end() && before->second == f->id;
-    if ((holding_back(f->id) && !for_it_already) || !(is_cleared(f->id) || in.available[i])) {
+    // An actor in place beside its start that waits to move into v's lane, its start's, lets v into
+    // its own first: the two swap lanes (lane_waited_for, transport.hpp). It holds back in
+    // move_actors.
+    const std::size_t r = role_of(f->id);
+    const bool swapping_actor = r < roles_.size() && lane_waited_for(*f, slots[r], time_left_s) == v.lane &&
+                                waiting_for_lane(f->id) == v.lane;
+    if ((holding_back(f->id) && !for_it_already) || !(is_cleared(f->id) || in.available[i] || swapping_actor)) {
       continue;  // it lets in another, or it is an actor or another play's
+    }
+    if (swapping_actor) {
+      if (before != letting_in_.end() && !for_it_already) stop_holding_back(before->second);
+      letting_in_[id] = f->id;
+      continue;
     }
     // It waits to move over itself, unless into the lane of the one it would let in: two cleared
     // vehicles alongside each other, each asked into the other's lane, each waited for the other

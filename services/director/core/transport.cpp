@@ -214,6 +214,15 @@ bool alongside_an_actor(const ObservedVehicle& v, int lane, const std::vector<Ac
   });
 }
 
+// As alongside_an_actor, but for an actor in place beside its start that waits to move into v's
+// lane, its start's: the two swap lanes, the actor letting v in first (lane_waited_for).
+bool alongside_an_actor_staying(const ObservedVehicle& v, int lane, const std::vector<ActorPlace>& actors) {
+  return std::any_of(actors.begin(), actors.end(), [&](const ActorPlace& a) {
+    return a.lane == lane && a.waits_for_lane != v.lane &&
+           in_zone(actor_room(v.direction, a.lane, a.s_m, a.length_m, a.speed_mps), lane, v.s_m, v.length_m);
+  });
+}
+
 // The speed at which a cleared vehicle covers `distance_m` (to a road position it must reach by the
 // start, `time_left_s` from now): in `t_plan_s` (clearing_time_s early) where that is within
 // [low, high], else just by the start. Early asks for more than any driver does late in the
@@ -332,21 +341,33 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
   const double s_then = s_after_m(v, t);
   const ZoneAtStart* hit = zone_hit(at.zones, v, s_then);
   if (hit == nullptr) return std::nullopt;
-  // A neighbouring lane that no zone and no role needs.
-  auto free_lane = [&](int lane) {
-    if (lane < 0 || lane >= at.lanes.of(v.direction) || alongside_an_actor(v, lane, at.actors)) return false;
+  // A neighbouring lane that no zone and no role needs (with `swapping`, also one where an actor
+  // alongside waits in place to move into v's lane: alongside_an_actor_staying).
+  auto free_lane = [&](int lane, bool swapping) {
+    if (lane < 0 || lane >= at.lanes.of(v.direction)) return false;
+    const bool alongside =
+        swapping ? alongside_an_actor_staying(v, lane, at.actors) : alongside_an_actor(v, lane, at.actors);
+    if (alongside) return false;
     for (const ZoneAtStart& z : at.zones) {
       if (z.lane == lane && z.direction == v.direction) return false;
     }
     return !a_role_lane(lane, at);
   };
-  for (int lane : {v.lane - 1, v.lane + 1}) {  // the right one first
-    if (free_lane(lane)) return Clearance{kOwnDesiredSpeed_mps, lane};
-  }
+  auto onto_free_lane = [&](bool swapping) -> std::optional<Clearance> {
+    for (int lane : {v.lane - 1, v.lane + 1}) {  // the right one first
+      if (free_lane(lane, swapping)) return Clearance{kOwnDesiredSpeed_mps, lane};
+    }
+    return std::nullopt;
+  };
+  if (const auto moved = onto_free_lane(false)) return moved;
+  // Swapping lanes with an actor in place beside it comes after getting out by its speed in its
+  // own lane: it holds the actor back while it lets v in (lead vehicle, seed 110, stop 67: a car the
+  // lead let in ahead of it, where it could have been ahead of the lead's room by its speed, left
+  // the lead behind its start).
   // On one lane a vehicle can only get out of a zone ahead of the ego by passing what is ahead of
   // it, or fall behind the ego by being passed: it is left to its own driving (it overtakes a
   // slow actor by itself when the oncoming traffic lets it).
-  if (t <= 0.0 || at.lanes.of(v.direction) <= 1) return std::nullopt;
+  if (t <= 0.0 || at.lanes.of(v.direction) <= 1) return onto_free_lane(true);
   const double p = dir * v.s_m;
   const DirectorConfig& cfg = at.cfg;
   // The band around its speed, never above the highest speed its type's drivers wish (trucks were
@@ -409,7 +430,18 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
     }
     if (!best || std::abs(speed - v.speed_mps) < std::abs(best->speed_mps - v.speed_mps)) best = Clearance{speed, v.lane};
   }
-  return best ? best : closest;
+  // By its speed only with a margin below its type's top (kTopSpeedMargin_mps): a truck asked for
+  // its top to get ahead of the lead's room never got there, the ego behind it at the same speed
+  // (lead vehicle, seed 37, stop 67).
+  if (best && best->speed_mps <= top_speed_of(at.types, v.type_index) - kTopSpeedMargin_mps) return best;
+  // Swapped, it keeps the speed its own lane's way asked for (at its own desired speed, a truck in
+  // the stopper's room that its top speed would have taken ahead of the room, the stopper slowing
+  // to its start, waited in it and the play failed: stopped vehicle, seed 107, stop 67).
+  const std::optional<Clearance> by_speed = best ? best : closest;
+  if (const auto swapped = onto_free_lane(true)) {
+    return Clearance{by_speed ? by_speed->speed_mps : kOwnDesiredSpeed_mps, swapped->lane};
+  }
+  return by_speed;
 }
 
 std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, const ObservedVehicle& actor,
@@ -429,6 +461,12 @@ std::optional<Clearance> make_way(const ObservedVehicle& v, const Slot& slot, co
     if (clear_lane(lane)) return Clearance{actor_cmd_mps, lane};
   }
   return std::nullopt;
+}
+
+int lane_waited_for(const ObservedVehicle& actor, const Slot& start, double time_left_s) {
+  if (actor.direction != start.direction || actor.lane == start.lane || actor.target_lane != actor.lane) return -1;
+  const double off_m = sign(actor.direction) * (s_after_m(actor, std::max(time_left_s, 0.0)) - start.s_m);
+  return std::abs(off_m) <= kActorInPlace_m ? start.lane : -1;
 }
 
 bool keeps_lane_request(const ObservedVehicle& v, const LaneRequest& asked, int lane, double now_s) {

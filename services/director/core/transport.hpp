@@ -144,12 +144,14 @@ ZoneAtStart joined_zone(const ZoneAtStart& zone, const std::vector<ZoneAtStart>&
 // ego follows it at its speed and that actor is in place already (stop 46): onto the free lane
 // first, then into such a lane, then by its speed in its own. Never into a lane where an actor is
 // alongside it (from just behind it to the room the actor keeps ahead): it would cut in on the
-// actor.
+// actor; onto the free lane, though, where that actor waits in place to move into v's lane
+// (ActorPlace::waits_for_lane): the two swap lanes, the actor letting v in.
 struct ActorPlace {
   int lane = 0;
   double s_m = 0.0;
   double speed_mps = 0.0;
   double length_m = 4.5;  // the actor's
+  int waits_for_lane = -1;  // lane_waited_for
 };
 struct Clearance {
   double speed_mps = 0.0;  // desired speed (kOwnDesiredSpeed_mps: its own, when it only changes lane)
@@ -167,6 +169,16 @@ struct ClearingSituation {
   TypeTable types = {};                 // the vehicle types' drivers (stage.hpp): none asked above its top speed
 };
 std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSituation& at);
+
+// The lane of its start that an actor in place beside it waits to move into: in another lane of
+// its direction than the start's, not moving over yet, and within kActorInPlace_m of its start by
+// then at its present speed (`time_left_s` from now); -1 otherwise. A vehicle of the director's in
+// its room in that lane may move into the actor's lane, the actor letting it in (the two swap
+// lanes; PlayRun::let_in): kept apart, a truck at its type's top speed that the ego followed stood
+// in the lead's room, and the lead beside it waited until the handover failed (lead vehicle, seeds
+// 9, 37 and 66, stop 67). Not one still on its way to its place: let in ahead of it, a truck that
+// the ego followed at 19 m/s held it back (seed 208).
+int lane_waited_for(const ObservedVehicle& actor, const Slot& start, double time_left_s);
 
 // A vehicle that holds an actor up on its way to its slot (in the slot's lane, ahead of the actor
 // within kHoldsUpHorizon_s at its speed and not beyond the slot, slower than the actor's command by
