@@ -17,7 +17,8 @@ constexpr double kPassedEgoBy_m = 15.0;
 // Extra room around a zone a cleared vehicle must keep.
 constexpr double kZoneMargin_m = 5.0;
 // A vehicle is not sent into a lane where an actor starts faster than its type's top speed less
-// this (slower_than_an_actor_of).
+// this (slower_than_an_actor_of), and a way out of a zone by its speed counts as one before a swap
+// of lanes with an actor only this far below that top (clear_out).
 constexpr double kTopSpeedMargin_mps = 1.0;
 // A cleared vehicle is planned to be out of the zone this long before the start (half the time
 // left, once less than twice this is left): a plan spread over all the time left runs late, as
