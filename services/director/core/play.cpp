@@ -88,11 +88,17 @@ const ObservedVehicle* PlayRun::find(const PlayInput& in, VehicleId id) const {
   return it != in.world.end() && it->id == id ? &*it : nullptr;
 }
 
-const ObservedVehicle* PlayRun::let_in_by(const PlayInput& in, VehicleId id) const {
+VehicleId PlayRun::held_back_for(VehicleId id) const {
   for (const auto& [waiting, follower] : letting_in_) {
-    if (follower == id) return find(in, waiting);
+    if (follower == id) return waiting;
   }
-  return nullptr;
+  return kNoVehicle;
+}
+
+std::size_t PlayRun::role_of(VehicleId id) const {
+  std::size_t r = 0;
+  while (r < roles_.size() && roles_[r].actor != id) ++r;
+  return r;
 }
 
 bool PlayRun::is_cleared(VehicleId id) const {
@@ -358,8 +364,9 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, c
     // to speed an actor up (drive_speed_mps) reached 181 km/h for cars that wish 150 at most.
     t.drive_mps = std::min(t.drive_mps, std::max(top_speed_of(setting_.types, v->type_index), slots[r].speed_mps));
     // Letting a cleared vehicle into its lane (let_in), it holds back below that one's speed.
-    if (const ObservedVehicle* let = let_in_by(in, v->id)) {
-      t.drive_mps = std::min(t.drive_mps, std::max(0.0, let->speed_mps - kLetIn_mps));
+    const VehicleId let = held_back_for(v->id);
+    if (const ObservedVehicle* w = let == kNoVehicle ? nullptr : find(in, let)) {
+      t.drive_mps = std::min(t.drive_mps, std::max(0.0, w->speed_mps - kLetIn_mps));
     }
     role.command_mps = t.speed_mps;
     role.position_error_m = t.position_error_m;
@@ -405,8 +412,7 @@ std::string PlayRun::start_problems(const PlayInput& in) {
   // The zones around where the ego is now.
   const std::vector<ZoneAtStart> zones = zones_of(staged_, in.ego.direction, staged_lane(in), in.ego.s_m, setting_.lanes);
   for (const ObservedVehicle& v : in.world) {
-    const bool actor = std::any_of(roles_.begin(), roles_.end(), [&](const Role& r) { return r.actor == v.id; });
-    if (actor) continue;
+    if (role_of(v.id) < roles_.size()) continue;  // an actor
     if (zone_hit(zones, v, v.s_m) != nullptr) problem("vehicle " + std::to_string(v.id) + " in a clear zone");
   }
   return problems;

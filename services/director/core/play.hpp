@@ -226,9 +226,10 @@ class PlayRun {
   // Whether a vehicle this play holds keeps the lane change it was asked for instead of `lane`
   // (transport.hpp, keeps_lane_request).
   bool holds_lane_request(const ObservedVehicle& v, int lane, double now_s) const;
-  bool holding_back(VehicleId id) const;  // holds back to let another in (let_in)
-  // The vehicle `id` holds back for (let_in), if any.
-  const ObservedVehicle* let_in_by(const PlayInput& in, VehicleId id) const;
+  // The vehicle `id` holds back for to let it in (let_in); kNoVehicle: none.
+  VehicleId held_back_for(VehicleId id) const;
+  bool holding_back(VehicleId id) const { return held_back_for(id) != kNoVehicle; }
+  std::size_t role_of(VehicleId id) const;  // the role `id` plays; roles_.size(): none
   // Notes a lane change asked of `v` by `c` (one in its own lane ends a request).
   void note_lane_request(const ObservedVehicle& v, const ActorControl& c, double now_s);
   // What keeps the start condition from holding now ("" : nothing); sets the roles' errors.

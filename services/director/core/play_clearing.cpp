@@ -36,10 +36,6 @@ bool PlayRun::holds_lane_request(const ObservedVehicle& v, int lane, double now_
   return keeps_lane_request(v, asked->second, lane, now_s);
 }
 
-bool PlayRun::holding_back(VehicleId id) const {
-  return std::any_of(letting_in_.begin(), letting_in_.end(), [&](const auto& e) { return e.second == id; });
-}
-
 void PlayRun::note_lane_request(const ObservedVehicle& v, const ActorControl& c, double now_s) {
   if (c.lane < 0 || c.lane == v.lane) {
     lane_requests_.erase(v.id);
@@ -273,12 +269,6 @@ void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, double
     const int lane = cmd->second.lane;
     const bool waits = lane >= 0 && v->lane == v->target_lane && v->lane != lane && v->indicator != 0;
     return waits ? lane : -1;
-  };
-  // The role `id` plays (roles_.size(): none).
-  auto role_of = [&](VehicleId id) {
-    std::size_t r = 0;
-    while (r < roles_.size() && roles_[r].actor != id) ++r;
-    return r;
   };
   // A vehicle that held back drives on as it likes, in its lane (an actor goes on its way:
   // move_actors).

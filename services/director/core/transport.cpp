@@ -207,19 +207,13 @@ namespace {
 // beside the lead, which waited to move in beside it: lead vehicle, seed 10. Until stop 54 the
 // room was built with v's length, 6 m longer each way for a truck: a truck the ego followed in a
 // cut-in's zone, its rear 33-38 m ahead of the cutter's centre, counted as alongside the cutter
-// and never moved over; seeds 294 and 313.)
-bool alongside_an_actor(const ObservedVehicle& v, int lane, const std::vector<ActorPlace>& actors) {
+// and never moved over; seeds 294 and 313.) With `swapping`, an actor in place beside its start
+// that waits to move into v's lane, its start's, does not count: the two swap lanes, the actor
+// letting v in first (lane_waited_for).
+bool alongside_an_actor(const ObservedVehicle& v, int lane, const std::vector<ActorPlace>& actors,
+                        bool swapping = false) {
   return std::any_of(actors.begin(), actors.end(), [&](const ActorPlace& a) {
-    return a.lane == lane &&
-           in_zone(actor_room(v.direction, a.lane, a.s_m, a.length_m, a.speed_mps), lane, v.s_m, v.length_m);
-  });
-}
-
-// As alongside_an_actor, but for an actor in place beside its start that waits to move into v's
-// lane, its start's: the two swap lanes, the actor letting v in first (lane_waited_for).
-bool alongside_an_actor_staying(const ObservedVehicle& v, int lane, const std::vector<ActorPlace>& actors) {
-  return std::any_of(actors.begin(), actors.end(), [&](const ActorPlace& a) {
-    return a.lane == lane && a.waits_for_lane != v.lane &&
+    return a.lane == lane && !(swapping && a.waits_for_lane == v.lane) &&
            in_zone(actor_room(v.direction, a.lane, a.s_m, a.length_m, a.speed_mps), lane, v.s_m, v.length_m);
   });
 }
@@ -343,12 +337,9 @@ std::optional<Clearance> clear_out(const ObservedVehicle& v, const ClearingSitua
   const ZoneAtStart* hit = zone_hit(at.zones, v, s_then);
   if (hit == nullptr) return std::nullopt;
   // A neighbouring lane that no zone and no role needs (with `swapping`, also one where an actor
-  // alongside waits in place to move into v's lane: alongside_an_actor_staying).
+  // alongside waits in place to move into v's lane: alongside_an_actor).
   auto free_lane = [&](int lane, bool swapping) {
-    if (lane < 0 || lane >= at.lanes.of(v.direction)) return false;
-    const bool alongside =
-        swapping ? alongside_an_actor_staying(v, lane, at.actors) : alongside_an_actor(v, lane, at.actors);
-    if (alongside) return false;
+    if (lane < 0 || lane >= at.lanes.of(v.direction) || alongside_an_actor(v, lane, at.actors, swapping)) return false;
     for (const ZoneAtStart& z : at.zones) {
       if (z.lane == lane && z.direction == v.direction) return false;
     }
