@@ -9,7 +9,7 @@
 #include "director_test_util.hpp"
 #include "director/core/script.hpp"
 #include "director/core/stage.hpp"
-#include "director/core/transport.hpp"
+#include "director/core/zones.hpp"
 
 namespace entourage::director {
 namespace {

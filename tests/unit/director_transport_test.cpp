@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core_test_util.hpp"
+#include "director/core/clearing.hpp"
 #include "director/core/transport.hpp"
 #include "director_test_util.hpp"
 

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "director/core/assignment.hpp"
-#include "director/core/transport.hpp"
+#include "director/core/zones.hpp"
 
 namespace entourage::director {
 

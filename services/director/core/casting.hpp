@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "director/core/stage.hpp"
-#include "director/core/transport.hpp"
+#include "director/core/zones.hpp"
 
 namespace entourage::director {
 

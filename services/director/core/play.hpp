@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "director/core/casting.hpp"
+#include "director/core/clearing.hpp"
 #include "director/core/recent_top.hpp"
 #include "director/core/script.hpp"
 #include "director/core/stage.hpp"
@@ -167,7 +168,7 @@ class PlayRun {
                    PlayOutput& out);
   void clear_zones(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
                    PlayOutput& out);
-  // Vehicles waiting to change into a lane they were asked for are let in (transport.hpp,
+  // Vehicles waiting to change into a lane they were asked for are let in (clearing.hpp,
   // follower_to_let_in); a vehicle that let one in drives on at its own speed in its lane.
   // `slots`: the roles' starts, `time_left_s` from now (an actor leaving the ego's lane for its
   // start's is let in too; one in place beside its start lets in the vehicle it swaps lanes with).
@@ -224,7 +225,7 @@ class PlayRun {
   // of the ego (the vehicles this play created and not yet saw where they would be now).
   bool oncoming_near_sight(const PlayInput& in, double sight_m) const;
   // Whether a vehicle this play holds keeps the lane change it was asked for instead of `lane`
-  // (transport.hpp, keeps_lane_request).
+  // (clearing.hpp, keeps_lane_request).
   bool holds_lane_request(const ObservedVehicle& v, int lane, double now_s) const;
   // The vehicle `id` holds back for to let it in (let_in); kNoVehicle: none.
   VehicleId held_back_for(VehicleId id) const;

@@ -1,10 +1,11 @@
 // The director's zone clearing, a phase of a play's preparation (play.hpp): vehicles that would
 // stand in a clear zone or in an actor's room at the start are asked out, vehicles in an actor's way
 // make way, waiting ones are let in, and shortly before the start the vehicles beside a zone keep
-// their lane. How each vehicle is moved: transport.hpp.
+// their lane. How each vehicle is moved: clearing.hpp.
 #include <algorithm>
 #include <cmath>
 
+#include "director/core/clearing.hpp"
 #include "director/core/play.hpp"
 #include "director/core/transport.hpp"
 
@@ -321,7 +322,7 @@ void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, double
     const auto i = static_cast<std::size_t>(f - in.world.data());
     const bool for_it_already = before != letting_in_.end() && before->second == f->id;
     // An actor in place beside its start that waits to move into v's lane, its start's, lets v into
-    // its own first: the two swap lanes (lane_waited_for, transport.hpp). It holds back in
+    // its own first: the two swap lanes (lane_waited_for, clearing.hpp). It holds back in
     // move_actors.
     const std::size_t r = role_of(f->id);
     const bool swapping_actor = r < roles_.size() && lane_waited_for(*f, slots[r], time_left_s) == v.lane &&
