@@ -131,7 +131,7 @@ TEST(Clearing, OneHoldingBackIsNeverAskedAboveItsTypesTopSpeed) {
 TEST(Clearing, AVehicleMakingWayForAnActorDoesSoAtTheActorsPace) {
   DirectorCore core(with_trucks(testing::cutter_scenario(), 30.0), 1);
   StepInput in;
-  const ObservedVehicle cutter = vehicle(7, 1990.0, 32.0, 1);  // just behind the ego in the left lane
+  const ObservedVehicle cutter = vehicle(7, 1985.0, 28.0, 1);  // just behind the ego in the left lane
   ObservedVehicle slow = vehicle(8, 2030.0, 20.0, 1);  // a truck ahead of it there
   slow.type_index = 1;
   std::optional<ActorControl> asked;
@@ -233,6 +233,39 @@ TEST(Clearing, AnActorBesideItsStartLetsInTheVehicleInItsRoomThatMustTakeTheActo
   step(5);
   step(6);
   EXPECT_GT(sent.at(7).speed_mps, 25.0 - kLetIn_mps);
+}
+
+// One just behind a waiting vehicle in the lane it waits for does not let it in where holding back
+// would hold up an actor on its way to its start in that lane (held_back_holds_up; cut-in, seed
+// 243, stop 68: a car 51 m ahead of the ego held back to 23 m/s for one cleared off the ego's lane,
+// and the car beside the ego and the cutter behind both slowed with it).
+TEST(Clearing, NobodyLetsAnotherInByHoldingUpAnActorOnItsWay) {
+  ScenarioConfig sc = with_trucks(testing::cutter_scenario(), 30.0);
+  sc.plays[0].roles[0].type_index = 0;  // a car
+  sc.plays[0].clear = {{0, 3.0, 400.0}};
+  DirectorCore core(sc, 1);
+  StepInput in;
+  const ObservedVehicle cutter = vehicle(7, 1990.0, 32.0, 1);  // coming up fast just behind the ego
+  ObservedVehicle waiting = vehicle(8, 2200.0, 28.0, 0);       // in the zone ahead of the ego, 200 m
+  ObservedVehicle behind = vehicle(9, 2192.0, 28.0, 1);        // just behind it in the cutter's lane
+  waiting.type_index = behind.type_index = 1;                  // trucks: neither is cast as the cutter
+  std::map<VehicleId, ActorControl> sent;
+  auto step = [&](Step k) {
+    in.step = k;
+    in.ego = testing::ego_at(k, 2000.0 + 2.5 * static_cast<double>(k), 25.0);
+    in.world_prev = {cutter, waiting, behind};
+    for (const ActorCommand& c : core.step(in).commands) sent[c.vehicle] = c.control;
+  };
+  for (Step k = 0; k < 3; ++k) step(k);  // trigger point 1; cast; transporting and clearing
+  ASSERT_EQ(sent.count(7), 1u);
+  ASSERT_EQ(sent.count(8), 1u);
+  EXPECT_EQ(sent.at(7).lane, 1);
+  EXPECT_GT(sent.at(7).speed_mps, waiting.speed_mps - kLetIn_mps + kHoldsUp_mps);  // it must come up fast
+  EXPECT_EQ(sent.at(8).lane, 1);  // out of the zone, into the cutter's lane ahead of its room
+  waiting.indicator = 1;          // left: it waits to move over
+  step(3);
+  step(4);
+  EXPECT_TRUE(sent.count(9) == 0 || sent.at(9).speed_mps != waiting.speed_mps - kLetIn_mps);
 }
 
 // On one lane per direction a vehicle that passes the ego during the preparation is caught between

@@ -220,6 +220,29 @@ TEST(Transport, TheVehicleJustBehindInTheTargetLaneLetsAWaitingVehicleInUnlessTh
             nullptr);
 }
 
+// One that would let another in holds an actor up by holding back when it is ahead of the actor in
+// the lane of the actor's start, the actor still behind that start, within kHoldsUpHorizon_s of it
+// (beyond the start too), and the hold is below the actor's command by kHoldsUp_mps (cut-in, seed
+// 243, stop 68).
+TEST(Transport, HoldingBackToLetAnotherInHoldsUpAnActorBehindItOnItsWayToItsStart) {
+  const Slot start{Direction::kForward, 1, 2012.0, 26.4};
+  const ObservedVehicle actor = vehicle(7, 1950.0, 25.0, 1);
+  const double cmd_mps = 30.0;
+  const ObservedVehicle follower = vehicle(9, 2092.0, 26.0, 1);  // 80 m beyond the start
+  EXPECT_TRUE(held_back_holds_up(follower, 23.0, start, actor, cmd_mps));
+  // Not below the command by kHoldsUp_mps.
+  EXPECT_FALSE(held_back_holds_up(follower, cmd_mps - kHoldsUp_mps, start, actor, cmd_mps));
+  // Beyond kHoldsUpHorizon_s at the command.
+  EXPECT_FALSE(held_back_holds_up(vehicle(9, 1950.0 + cmd_mps * kHoldsUpHorizon_s + 1.0, 26.0, 1), 23.0, start, actor,
+                                  cmd_mps));
+  // Behind the actor, or in another lane.
+  EXPECT_FALSE(held_back_holds_up(vehicle(9, 1940.0, 26.0, 1), 23.0, start, actor, cmd_mps));
+  EXPECT_FALSE(held_back_holds_up(vehicle(9, 2092.0, 26.0, 0), 23.0, start, actor, cmd_mps));
+  // The actor beyond its start already, or not yet in its start's lane.
+  EXPECT_FALSE(held_back_holds_up(follower, 23.0, start, vehicle(7, 2020.0, 25.0, 1), cmd_mps));
+  EXPECT_FALSE(held_back_holds_up(follower, 23.0, start, vehicle(7, 1950.0, 25.0, 0), cmd_mps));
+}
+
 TEST(Transport, BesideAStandingWaitingVehicleTheOneBehindLetsItIn) {
   // Waiting at a standstill, with a queue standing in the target lane: vehicle 2 beside it, 2 m
   // behind its centre, holding back below its speed would stand beside it for good (traced: a lead

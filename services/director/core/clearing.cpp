@@ -314,4 +314,13 @@ const ObservedVehicle* follower_to_let_in(const ObservedVehicle& waiting, int la
   return gap_m < std::max(kLetInReach_s * nearest->speed_mps, kLetInQueueReach_m) ? nearest : nullptr;
 }
 
+bool held_back_holds_up(const ObservedVehicle& follower, double hold_mps, const Slot& start,
+                        const ObservedVehicle& actor, double actor_cmd_mps) {
+  const int dir = sign(start.direction);
+  if (dir * start.s_m <= dir * actor.s_m || !occupies(actor, start.direction, start.lane)) return false;
+  ObservedVehicle held = follower;
+  held.speed_mps = hold_mps;
+  return holds_up(held, start.direction, start.lane, std::numeric_limits<double>::infinity(), actor, actor_cmd_mps);
+}
+
 }  // namespace entourage::director

@@ -133,5 +133,15 @@ inline bool nearly_stands(const ObservedVehicle& waiting) { return waiting.speed
 // ego is the one just behind it there).
 const ObservedVehicle* follower_to_let_in(const ObservedVehicle& waiting, int lane,
                                           const std::vector<ObservedVehicle>& world, const EgoObservation& ego);
+// Whether `follower`, holding back at `hold_mps` to let one in, would hold up an actor on its way to
+// its start (`actor_cmd_mps`: the actor's command): in the start's lane, ahead of the actor there,
+// the actor still behind its start, within kHoldsUpHorizon_s of it at its speed or command (beyond
+// the start too: the vehicles between slow down with it) and `hold_mps` below that command by
+// kHoldsUp_mps (holds_up, transport.hpp). Such a follower does not let the waiting one in. (Traced,
+// cut-in seed 243, stop 68: a car 51 m ahead of the ego in the cutter's lane held back to 23 m/s for
+// a cleared car that waited to move in ahead of it; the car beside the ego, and the cutter behind
+// both, slowed with it, and the cutter never got past the ego.)
+bool held_back_holds_up(const ObservedVehicle& follower, double hold_mps, const Slot& start,
+                        const ObservedVehicle& actor, double actor_cmd_mps);
 
 }  // namespace entourage::director

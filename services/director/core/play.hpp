@@ -173,6 +173,10 @@ class PlayRun {
   // `slots`: the roles' starts, `time_left_s` from now (an actor leaving the ego's lane for its
   // start's is let in too; one in place beside its start lets in the vehicle it swaps lanes with).
   void let_in(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out);
+  // Whether `follower`, holding back in `lane` at `hold_mps`, would hold up an actor on its way
+  // to its start there (clearing.hpp, held_back_holds_up).
+  bool holds_an_actor_up(const PlayInput& in, const std::vector<Slot>& slots, const ObservedVehicle& follower, int lane,
+                         double hold_mps) const;
   // On one lane per direction, with a clear zone ahead of the ego in its lane: the vehicles behind
   // the ego in its lane, within the inner region, keep their lane (pass nobody) until the
   // handover. Nothing gets out from between the ego and an actor ahead of it there (casting.hpp,

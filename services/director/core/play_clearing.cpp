@@ -261,6 +261,16 @@ void PlayRun::hold_followers(const PlayInput& in, PlayOutput& out) {
   }
 }
 
+bool PlayRun::holds_an_actor_up(const PlayInput& in, const std::vector<Slot>& slots, const ObservedVehicle& follower,
+                                int lane, double hold_mps) const {
+  for (std::size_t r = 0; r < roles_.size(); ++r) {
+    const ObservedVehicle* actor = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    if (actor == nullptr || slots[r].lane != lane) continue;
+    if (held_back_holds_up(follower, hold_mps, slots[r], *actor, roles_[r].command_mps)) return true;
+  }
+  return false;
+}
+
 void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
   // The lane `id` was asked to change into while it has not started moving there; -1 otherwise.
   auto waiting_for_lane = [&](VehicleId id) {
@@ -335,6 +345,18 @@ void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, double
       letting_in_[id] = f->id;
       continue;
     }
+    // Never by holding an actor up (held_back_holds_up): the waiting one waits for a gap, or for
+    // another to let it in.
+    // Never asked above its type's top speed: behind a faster waiting vehicle, a truck was asked to
+    // 33 m/s where trucks wish 26.4 at most.
+    const double hold_mps = std::min(v.speed_mps - kLetIn_mps, top_speed_of(setting_.types, f->type_index));
+    if (holds_an_actor_up(in, slots, *f, lane, hold_mps)) {
+      if (for_it_already) {
+        stop_holding_back(f->id);
+        letting_in_.erase(before);
+      }
+      continue;
+    }
     // It waits to move over itself, unless into the lane of the one it would let in: two cleared
     // vehicles alongside each other, each asked into the other's lane, each waited for the other
     // to let it in (a cut-in's cutter held up behind them for 30 s, seed 154); the one ahead moves
@@ -351,9 +373,6 @@ void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, double
     }
     letting_in_[id] = f->id;
     lane_requests_.erase(f->id);
-    // Never asked above its type's top speed: behind a faster waiting vehicle, a truck was asked to
-    // 33 m/s where trucks wish 26.4 at most.
-    const double hold_mps = std::min(v.speed_mps - kLetIn_mps, top_speed_of(setting_.types, f->type_index));
     command(f->id, transported(std::max(0.0, hold_mps), f->lane), in.step, out);
   }
 }

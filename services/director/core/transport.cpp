@@ -8,10 +8,6 @@
 namespace entourage::director {
 
 namespace {
-// A vehicle in the slot's lane slower than the actor's command by this much holds it up.
-constexpr double kHoldsUp_mps = 1.0;
-// It counts only if it is ahead of the actor by less than this many seconds at the command speed.
-constexpr double kHoldsUpHorizon_s = 8.0;
 // An actor that passed the ego keeps its passing lane until this far ahead of it.
 constexpr double kPassedEgoBy_m = 15.0;
 

@@ -80,6 +80,10 @@ TransportCommand transport(const Slot& slot, const ObservedVehicle& actor, doubl
                            double dt_s, const std::vector<ObservedVehicle>& world, const EgoObservation& ego,
                            const Lanes& lanes, const DirectorConfig& cfg, double rate_mps2, double type_accel_mps2);
 
+// A vehicle in the slot's lane slower than the actor's command by this much holds it up...
+inline constexpr double kHoldsUp_mps = 1.0;
+// ...if it is ahead of the actor by less than this many seconds at its speed or command.
+inline constexpr double kHoldsUpHorizon_s = 8.0;
 // Does `v` hold up an actor that must get to `target_p` (progress along its direction) in `lane`:
 // ahead of it there, within kHoldsUpHorizon_s at the actor's speed or command `cmd_mps` and not
 // beyond the target, slower than the command by kHoldsUp_mps? (transport passes it; make_way asks
