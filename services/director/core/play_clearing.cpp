@@ -345,11 +345,11 @@ void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, double
       letting_in_[id] = f->id;
       continue;
     }
-    // Never by holding an actor up (held_back_holds_up): the waiting one waits for a gap, or for
-    // another to let it in.
     // Never asked above its type's top speed: behind a faster waiting vehicle, a truck was asked to
     // 33 m/s where trucks wish 26.4 at most.
     const double hold_mps = std::min(v.speed_mps - kLetIn_mps, top_speed_of(setting_.types, f->type_index));
+    // Never by holding an actor up (held_back_holds_up): the waiting one waits for a gap, or for
+    // another to let it in.
     if (holds_an_actor_up(in, slots, *f, lane, hold_mps)) {
       if (for_it_already) {
         stop_holding_back(f->id);
