@@ -83,6 +83,7 @@ std::vector<VehicleId> PlayRun::actors() const {
 }
 
 const ObservedVehicle* PlayRun::find(const PlayInput& in, VehicleId id) const {
+  if (id == kNoVehicle) return nullptr;
   auto it = std::lower_bound(in.world.begin(), in.world.end(), id,
                              [](const ObservedVehicle& v, VehicleId x) { return v.id < x; });
   return it != in.world.end() && it->id == id ? &*it : nullptr;
@@ -265,7 +266,7 @@ std::optional<LeaderAhead> PlayRun::ego_leader(const PlayInput& in) const {
   double speed = v->speed_mps;
   for (std::size_t r = 0; r < roles_.size(); ++r) {
     const PlayRoleConfig& rc = play_.roles[r];
-    const ObservedVehicle* a = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    const ObservedVehicle* a = find(in, roles_[r].actor);
     if (a == nullptr || rc.direction != Direction::kForward || !occupies(*a, in.ego.direction, in.ego.lane)) continue;
     const double p = dir * a->s_m;
     if (p < dir * v->s_m || p >= nearest_p) continue;
@@ -364,8 +365,7 @@ void PlayRun::move_actors(const PlayInput& in, const std::vector<Slot>& slots, c
     // to speed an actor up (drive_speed_mps) reached 181 km/h for cars that wish 150 at most.
     t.drive_mps = std::min(t.drive_mps, std::max(top_speed_of(setting_.types, v->type_index), slots[r].speed_mps));
     // Letting a cleared vehicle into its lane (let_in), it holds back below that one's speed.
-    const VehicleId let = held_back_for(v->id);
-    if (const ObservedVehicle* w = let == kNoVehicle ? nullptr : find(in, let)) {
+    if (const ObservedVehicle* w = find(in, held_back_for(v->id))) {
       t.drive_mps = std::min(t.drive_mps, std::max(0.0, w->speed_mps - kLetIn_mps));
     }
     role.command_mps = t.speed_mps;
@@ -390,7 +390,7 @@ std::string PlayRun::start_problems(const PlayInput& in) {
   for (std::size_t r = 0; r < roles_.size(); ++r) {
     Role& role = roles_[r];
     const PlayRoleConfig& rc = staged_.roles[r];
-    const ObservedVehicle* v = role.actor == kNoVehicle ? nullptr : find(in, role.actor);
+    const ObservedVehicle* v = find(in, role.actor);
     if (v == nullptr) {
       problem(rc.name + ": no actor");
       continue;

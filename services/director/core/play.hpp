@@ -252,7 +252,7 @@ class PlayRun {
   // A role to cast: without an actor, or with one that has missed its start by far for a while
   // (the ego changed lane, traffic held it up): it is replaced if a better one is found.
   bool open(const Role& r, const PlayInput& in) const;
-  const ObservedVehicle* find(const PlayInput& in, VehicleId id) const;
+  const ObservedVehicle* find(const PlayInput& in, VehicleId id) const;  // nullptr: not in the world, or kNoVehicle
   bool is_cleared(VehicleId id) const;  // asked by this play to leave a zone or keep its lane
   void report(const PlayInput& in, PlayOutput& out, std::string detail);
   double ego_progress(const EgoObservation& ego) const { return sign(ego.direction) * ego.s_m; }

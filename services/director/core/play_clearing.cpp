@@ -52,14 +52,14 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   // What to clear: the play's zones and the room the actors need at their starts.
   std::vector<double> lengths;
   for (std::size_t r = 0; r < roles_.size(); ++r) {
-    const ObservedVehicle* v = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    const ObservedVehicle* v = find(in, roles_[r].actor);
     lengths.push_back(v != nullptr ? v->length_m : in.factory.length_m(std::max(play_.roles[r].type_index, 0)));
   }
   std::vector<ZoneAtStart> to_clear = slot_zones(slots, lengths, in.ego.direction);
   to_clear.insert(to_clear.end(), zones.begin(), zones.end());
   std::vector<ActorPlace> actors;
   for (std::size_t r = 0; r < roles_.size(); ++r) {
-    const ObservedVehicle* v = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    const ObservedVehicle* v = find(in, roles_[r].actor);
     if (v != nullptr && v->direction == in.ego.direction) {
       actors.push_back({v->target_lane, v->s_m, v->speed_mps, v->length_m, lane_waited_for(*v, slots[r], aim.time_s)});
     }
@@ -93,7 +93,7 @@ void PlayRun::clear_zones(const PlayInput& in, const std::vector<Slot>& slots, c
   }
   // Vehicles in an actor's way to its slot make way where they can.
   for (std::size_t r = 0; r < roles_.size(); ++r) {
-    const ObservedVehicle* actor = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    const ObservedVehicle* actor = find(in, roles_[r].actor);
     if (actor == nullptr) continue;
     const auto sent = sent_.find(actor->id);
     const int actor_cmd_lane = sent != sent_.end() ? sent->second.lane : -1;
@@ -147,7 +147,7 @@ bool PlayRun::someone_between(const PlayInput& in) const {
   const double ego_p = dir * in.ego.s_m;
   for (std::size_t r = 0; r < roles_.size(); ++r) {
     if (!ahead_in_ego_lane(staged_.roles[r])) continue;
-    const ObservedVehicle* a = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    const ObservedVehicle* a = find(in, roles_[r].actor);
     if (a == nullptr) return true;
     const double a_p = dir * a->s_m;
     for (const ObservedVehicle& v : in.world) {
@@ -182,7 +182,7 @@ double PlayRun::actors_ahead_in_view_m(const PlayInput& in) const {
   double farthest_m = -1.0;
   for (std::size_t r = 0; r < roles_.size(); ++r) {
     if (!ahead_in_ego_lane(staged_.roles[r])) continue;
-    const ObservedVehicle* a = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    const ObservedVehicle* a = find(in, roles_[r].actor);
     if (a == nullptr) return -1.0;
     const double ahead = dir * (a->s_m - in.ego.s_m);
     if (ahead <= 0.0 || ahead >= setting_.window.inner_ahead_m) return -1.0;
@@ -264,7 +264,7 @@ void PlayRun::hold_followers(const PlayInput& in, PlayOutput& out) {
 bool PlayRun::holds_an_actor_up(const PlayInput& in, const std::vector<Slot>& slots, const ObservedVehicle& follower,
                                 int lane, double hold_mps) const {
   for (std::size_t r = 0; r < roles_.size(); ++r) {
-    const ObservedVehicle* actor = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    const ObservedVehicle* actor = find(in, roles_[r].actor);
     if (actor == nullptr || slots[r].lane != lane) continue;
     if (held_back_holds_up(follower, hold_mps, slots[r], *actor, roles_[r].command_mps)) return true;
   }
@@ -308,7 +308,7 @@ void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, double
   // 4 runs lost with the lead in the wrong lane, 1 gained).
   std::vector<VehicleId> waiting_ones = cleared_;
   for (std::size_t r = 0; r < roles_.size(); ++r) {
-    const ObservedVehicle* a = roles_[r].actor == kNoVehicle ? nullptr : find(in, roles_[r].actor);
+    const ObservedVehicle* a = find(in, roles_[r].actor);
     if (a == nullptr || slots[r].direction != in.ego.direction) continue;
     const int start_lane = slots[r].lane;
     if (waiting_for_lane(a->id) == start_lane && leaves_ego_lane_ahead(in, *a, start_lane)) waiting_ones.push_back(a->id);
