@@ -173,6 +173,18 @@ class PlayRun {
   // `slots`: the roles' starts, `time_left_s` from now (an actor leaving the ego's lane for its
   // start's is let in too; one in place beside its start lets in the vehicle it swaps lanes with).
   void let_in(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out);
+  // The lane `id` was asked to change into while it has not started moving there; -1 otherwise.
+  int waiting_for_lane(const PlayInput& in, VehicleId id) const;
+  // A vehicle that held back drives on as it likes, in its lane (an actor goes on its way:
+  // move_actors).
+  void stop_holding_back(const PlayInput& in, VehicleId id, PlayOutput& out);
+  // Those holding back for a vehicle that no longer waits (it moved over, or left) drive on.
+  void end_hold_backs_no_longer_needed(const PlayInput& in, PlayOutput& out);
+  // Who may be let in: the cleared vehicles, and an actor leaving the ego's lane ahead of it.
+  std::vector<VehicleId> waiting_to_be_let_in(const PlayInput& in, const std::vector<Slot>& slots) const;
+  // Lets `v`, waiting to move into `lane`, in: picks the vehicle to hold back for it, if any may.
+  void let_in_one(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, const ObservedVehicle& v,
+                  int lane, PlayOutput& out);
   // Whether `follower`, holding back in `lane` at `hold_mps`, would hold up an actor on its way
   // to its start there (clearing.hpp, held_back_holds_up).
   bool holds_an_actor_up(const PlayInput& in, const std::vector<Slot>& slots, const ObservedVehicle& follower, int lane,

@@ -271,32 +271,34 @@ bool PlayRun::holds_an_actor_up(const PlayInput& in, const std::vector<Slot>& sl
   return false;
 }
 
-void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
-  // The lane `id` was asked to change into while it has not started moving there; -1 otherwise.
-  auto waiting_for_lane = [&](VehicleId id) {
-    const auto cmd = sent_.find(id);
-    const ObservedVehicle* v = find(in, id);
-    if (cmd == sent_.end() || v == nullptr || cmd->second.mode != ControlMode::kTransported) return -1;
-    const int lane = cmd->second.lane;
-    const bool waits = lane >= 0 && v->lane == v->target_lane && v->lane != lane && v->indicator != 0;
-    return waits ? lane : -1;
-  };
-  // A vehicle that held back drives on as it likes, in its lane (an actor goes on its way:
-  // move_actors).
-  auto stop_holding_back = [&](VehicleId id) {
-    const ObservedVehicle* v = find(in, id);
-    if (v == nullptr || role_of(id) < roles_.size()) return;
-    lane_requests_.erase(id);
-    command(id, transported(kOwnDesiredSpeed_mps, v->lane), in.step, out);
-  };
+int PlayRun::waiting_for_lane(const PlayInput& in, VehicleId id) const {
+  const auto cmd = sent_.find(id);
+  const ObservedVehicle* v = find(in, id);
+  if (cmd == sent_.end() || v == nullptr || cmd->second.mode != ControlMode::kTransported) return -1;
+  const int lane = cmd->second.lane;
+  const bool waits = lane >= 0 && v->lane == v->target_lane && v->lane != lane && v->indicator != 0;
+  return waits ? lane : -1;
+}
+
+void PlayRun::stop_holding_back(const PlayInput& in, VehicleId id, PlayOutput& out) {
+  const ObservedVehicle* v = find(in, id);
+  if (v == nullptr || role_of(id) < roles_.size()) return;
+  lane_requests_.erase(id);
+  command(id, transported(kOwnDesiredSpeed_mps, v->lane), in.step, out);
+}
+
+void PlayRun::end_hold_backs_no_longer_needed(const PlayInput& in, PlayOutput& out) {
   for (auto it = letting_in_.begin(); it != letting_in_.end();) {
-    if (waiting_for_lane(it->first) >= 0) {
+    if (waiting_for_lane(in, it->first) >= 0) {
       ++it;
       continue;
     }
-    stop_holding_back(it->second);
+    stop_holding_back(in, it->second, out);
     it = letting_in_.erase(it);
   }
+}
+
+std::vector<VehicleId> PlayRun::waiting_to_be_let_in(const PlayInput& in, const std::vector<Slot>& slots) const {
   // The cleared vehicles, and an actor ahead of the ego in the ego's lane that waits to leave it
   // for its start's lane: it cannot fall back there to find a gap (leaving_ego_lane_floor_mps), and
   // waited in vain (cut-in, seed 37, stop 55: a column of cleared cars 4 m/s faster than the cutter
@@ -306,75 +308,84 @@ void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, double
   // most of them with a vehicle in the zone, 5 gained); nor one that leaves it to pass a slower
   // vehicle (lead vehicle, every actor leaving the ego's lane ahead of it let in: 382 against 385,
   // 4 runs lost with the lead in the wrong lane, 1 gained).
-  std::vector<VehicleId> waiting_ones = cleared_;
+  std::vector<VehicleId> waiting = cleared_;
   for (std::size_t r = 0; r < roles_.size(); ++r) {
     const ObservedVehicle* a = find(in, roles_[r].actor);
     if (a == nullptr || slots[r].direction != in.ego.direction) continue;
     const int start_lane = slots[r].lane;
-    if (waiting_for_lane(a->id) == start_lane && leaves_ego_lane_ahead(in, *a, start_lane)) waiting_ones.push_back(a->id);
+    if (waiting_for_lane(in, a->id) == start_lane && leaves_ego_lane_ahead(in, *a, start_lane)) waiting.push_back(a->id);
   }
-  for (VehicleId id : waiting_ones) {
-    const int lane = waiting_for_lane(id);
+  return waiting;
+}
+
+void PlayRun::let_in(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s, PlayOutput& out) {
+  end_hold_backs_no_longer_needed(in, out);
+  for (VehicleId id : waiting_to_be_let_in(in, slots)) {
+    const int lane = waiting_for_lane(in, id);
     // One holding back for another is not let in itself meanwhile.
-    if (lane < 0 || holding_back(id)) continue;
-    const ObservedVehicle& v = *find(in, id);
-    const ObservedVehicle* f = follower_to_let_in(v, lane, in.world, in.ego);
-    const auto before = letting_in_.find(id);
-    if (f == nullptr) {
-      // Beside a standing one, one that held back would stand there with it for good: it drives
-      // on as it likes (moving, one that fell back out of reach holds on until it has moved over).
-      if (before != letting_in_.end() && nearly_stands(v)) {
-        stop_holding_back(before->second);
-        letting_in_.erase(before);
-      }
-      continue;
-    }
-    const auto i = static_cast<std::size_t>(f - in.world.data());
-    const bool for_it_already = before != letting_in_.end() && before->second == f->id;
-    // An actor in place beside its start that waits to move into v's lane, its start's, lets v into
-    // its own first: the two swap lanes (lane_waited_for, clearing.hpp). It holds back in
-    // move_actors.
-    const std::size_t r = role_of(f->id);
-    const bool swapping_actor = r < roles_.size() && lane_waited_for(*f, slots[r], time_left_s) == v.lane &&
-                                waiting_for_lane(f->id) == v.lane;
-    if ((holding_back(f->id) && !for_it_already) || !(is_cleared(f->id) || in.available[i] || swapping_actor)) {
-      continue;  // it lets in another, or it is an actor or another play's
-    }
-    if (swapping_actor) {
-      if (before != letting_in_.end() && !for_it_already) stop_holding_back(before->second);
-      letting_in_[id] = f->id;
-      continue;
-    }
-    // Never asked above its type's top speed: behind a faster waiting vehicle, a truck was asked to
-    // 33 m/s where trucks wish 26.4 at most.
-    const double hold_mps = std::min(v.speed_mps - kLetIn_mps, top_speed_of(setting_.types, f->type_index));
-    // Never by holding an actor up (held_back_holds_up): the waiting one waits for a gap, or for
-    // another to let it in.
-    if (holds_an_actor_up(in, slots, *f, lane, hold_mps)) {
-      if (for_it_already) {
-        stop_holding_back(f->id);
-        letting_in_.erase(before);
-      }
-      continue;
-    }
-    // It waits to move over itself, unless into the lane of the one it would let in: two cleared
-    // vehicles alongside each other, each asked into the other's lane, each waited for the other
-    // to let it in (a cut-in's cutter held up behind them for 30 s, seed 154); the one ahead moves
-    // first.
-    const auto f_asked = lane_requests_.find(f->id);
-    const bool swap = f_asked != lane_requests_.end() && f_asked->second.lane == v.lane;
-    if (is_cleared(f->id) && holds_lane_request(*f, f->lane, in.ego.time_s) && !swap) continue;
-    // One vehicle holds back for each: one that did so before and is no longer just behind it (it
-    // fell back, or another came between) drives on as it likes.
-    if (before != letting_in_.end() && !for_it_already) stop_holding_back(before->second);
-    if (!is_cleared(f->id)) {
-      cleared_.push_back(f->id);
-      in.available[i] = false;
-    }
-    letting_in_[id] = f->id;
-    lane_requests_.erase(f->id);
-    command(f->id, transported(std::max(0.0, hold_mps), f->lane), in.step, out);
+    if (lane >= 0 && !holding_back(id)) let_in_one(in, slots, time_left_s, *find(in, id), lane, out);
   }
+}
+
+void PlayRun::let_in_one(const PlayInput& in, const std::vector<Slot>& slots, double time_left_s,
+                         const ObservedVehicle& v, int lane, PlayOutput& out) {
+  const VehicleId id = v.id;
+  const ObservedVehicle* f = follower_to_let_in(v, lane, in.world, in.ego);
+  const auto before = letting_in_.find(id);
+  if (f == nullptr) {
+    // Beside a standing one, one that held back would stand there with it for good: it drives
+    // on as it likes (moving, one that fell back out of reach holds on until it has moved over).
+    if (before != letting_in_.end() && nearly_stands(v)) {
+      stop_holding_back(in, before->second, out);
+      letting_in_.erase(before);
+    }
+    return;
+  }
+  const auto i = static_cast<std::size_t>(f - in.world.data());
+  const bool for_it_already = before != letting_in_.end() && before->second == f->id;
+  // An actor in place beside its start that waits to move into v's lane, its start's, lets v into
+  // its own first: the two swap lanes (lane_waited_for, clearing.hpp). It holds back in
+  // move_actors.
+  const std::size_t r = role_of(f->id);
+  const bool swapping_actor = r < roles_.size() && lane_waited_for(*f, slots[r], time_left_s) == v.lane &&
+                              waiting_for_lane(in, f->id) == v.lane;
+  if ((holding_back(f->id) && !for_it_already) || !(is_cleared(f->id) || in.available[i] || swapping_actor)) {
+    return;  // it lets in another, or it is an actor or another play's
+  }
+  if (swapping_actor) {
+    if (before != letting_in_.end() && !for_it_already) stop_holding_back(in, before->second, out);
+    letting_in_[id] = f->id;
+    return;
+  }
+  // Never asked above its type's top speed: behind a faster waiting vehicle, a truck was asked to
+  // 33 m/s where trucks wish 26.4 at most.
+  const double hold_mps = std::min(v.speed_mps - kLetIn_mps, top_speed_of(setting_.types, f->type_index));
+  // Never by holding an actor up (held_back_holds_up): the waiting one waits for a gap, or for
+  // another to let it in.
+  if (holds_an_actor_up(in, slots, *f, lane, hold_mps)) {
+    if (for_it_already) {
+      stop_holding_back(in, f->id, out);
+      letting_in_.erase(before);
+    }
+    return;
+  }
+  // It waits to move over itself, unless into the lane of the one it would let in: two cleared
+  // vehicles alongside each other, each asked into the other's lane, each waited for the other
+  // to let it in (a cut-in's cutter held up behind them for 30 s, seed 154); the one ahead moves
+  // first.
+  const auto f_asked = lane_requests_.find(f->id);
+  const bool swap = f_asked != lane_requests_.end() && f_asked->second.lane == v.lane;
+  if (is_cleared(f->id) && holds_lane_request(*f, f->lane, in.ego.time_s) && !swap) return;
+  // One vehicle holds back for each: one that did so before and is no longer just behind it (it
+  // fell back, or another came between) drives on as it likes.
+  if (before != letting_in_.end() && !for_it_already) stop_holding_back(in, before->second, out);
+  if (!is_cleared(f->id)) {
+    cleared_.push_back(f->id);
+    in.available[i] = false;
+  }
+  letting_in_[id] = f->id;
+  lane_requests_.erase(f->id);
+  command(f->id, transported(std::max(0.0, hold_mps), f->lane), in.step, out);
 }
 
 }  // namespace entourage::director
