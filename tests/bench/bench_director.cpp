@@ -74,7 +74,8 @@ void print_play(const std::string& name, const PlayConfig& play, const std::vect
   double actor_held_up_s = 0.0, actor_held_up_by_commanded_s = 0.0;
   ExtremesOverRuns actors, cleared, autonomous;
   int taken_off = 0, taken_off_in_view = 0, taken_off_for_room = 0;
-  int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0;
+  int ok = 0, at_trigger = 0, created = 0, in_view = 0, overlaps_actor = 0, overlaps_other = 0, ego_contacts = 0,
+      commanded_twice = 0;
   bench::SignalsCalledOff off_commanded, off_autonomous;
   bench::LaneChangesMade changes_commanded, changes_autonomous;
   bench::AboveTopSpeed above_commanded, above_autonomous;
@@ -138,6 +139,7 @@ void print_play(const std::string& name, const PlayConfig& play, const std::vect
     overlaps_actor += r.overlaps_with_actor;
     overlaps_other += r.overlaps_other;
     ego_contacts += r.ego_contacts_with_actor;
+    commanded_twice += r.commanded_twice_in_a_step;
   }
   const double n = static_cast<double>(runs.size());
   std::printf("\n== %s: %zu runs ==\n", name.c_str(), runs.size());
@@ -220,6 +222,7 @@ void print_play(const std::string& name, const PlayConfig& play, const std::vect
               taken_off, taken_off_in_view, taken_off_for_room);
   std::printf("overlapping pairs              with an actor %d   autonomous only %d   ego touching an actor %d\n",
               overlaps_actor, overlaps_other, ego_contacts);
+  std::printf("a vehicle commanded twice in one step (one phase undoing another's command): %d\n", commanded_twice);
 }
 
 void print_paired(const std::string& path, const std::map<std::uint64_t, bool>& before,

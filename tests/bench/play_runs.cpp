@@ -273,7 +273,11 @@ PlayRunResult run_play(const ScenarioConfig& sc, std::uint64_t seed, std::FILE* 
       if (in.ego_prev) right_passes.observe(*in.ego_prev, in.world_prev, r.passed_on_right, trace);
     }
     if (r.trigger2_time_s >= 0.0 && r.traffic_speed_mps < 0.0) r.traffic_speed_mps = around_ego.mean_mps();
-    for (const ActorCommand& c : out.director.commands) last_commands[c.vehicle] = c.control;
+    std::set<VehicleId> commanded_now;
+    for (const ActorCommand& c : out.director.commands) {
+      if (!commanded_now.insert(c.vehicle).second) ++r.commanded_twice_in_a_step;
+      last_commands[c.vehicle] = c.control;
+    }
     for (const Handoff& h : out.director.births) {
       ++r.created;
       if (w.in_inner(h.vehicle.s_m)) ++r.created_in_view;

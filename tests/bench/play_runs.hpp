@@ -219,6 +219,9 @@ struct PlayRunResult {
   int overlaps_with_actor = 0;       // vehicle pairs overlapping where one is an actor
   int overlaps_other = 0;            // any other overlapping pair (autonomous traffic)
   int ego_contacts_with_actor = 0;   // the ego overlapping an actor (the ego may crash)
+  // Two commands or more to one vehicle in one step of the director's output (one phase undoing
+  // another's command; must be 0).
+  int commanded_twice_in_a_step = 0;
   Step steps = 0;
 };
 

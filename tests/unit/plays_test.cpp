@@ -25,6 +25,10 @@ void expect_safe(const PlayRunResult& r, const std::string& what) {
   EXPECT_EQ(r.overlaps_with_actor, 0) << what;
   EXPECT_EQ(r.created_in_view, 0) << what;
   EXPECT_EQ(r.taken_off_in_view, 0) << what;
+  // One command per vehicle per step: a later phase of the director's step replaces an earlier
+  // phase's command rather than sending a second (stop 69: a vehicle holding back to let another
+  // in was also told, every step, to clear a zone, and got both).
+  EXPECT_EQ(r.commanded_twice_in_a_step, 0) << what;
   // No vehicle the director commands drives in view faster than its type's drivers ever wish (a
   // truck asked ahead of a zone at 127 km/h where trucks wish 95 at most, cut-in, stop 44).
   EXPECT_EQ(r.above_top_commanded.vehicle_s, 0.0)

@@ -139,6 +139,12 @@ void PlayRun::command(VehicleId id, const ActorControl& c, Step step, PlayOutput
   auto it = sent_.find(id);
   if (it != sent_.end() && it->second == c) return;
   sent_[id] = c;
+  const auto same = std::find_if(out.commands.begin(), out.commands.end(),
+                                 [&](const ActorCommand& earlier) { return earlier.vehicle == id && earlier.step == step; });
+  if (same != out.commands.end()) {
+    same->control = c;
+    return;
+  }
   out.commands.push_back({id, step, c});
 }
 

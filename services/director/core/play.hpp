@@ -257,6 +257,9 @@ class PlayRun {
   void release_all(const PlayInput& in, PlayOutput& out);
   void finish_release(const PlayInput& in, PlayOutput& out);
 
+  // Sends `c` to `id` unless it was the last control sent to it. One command per vehicle per step:
+  // a later phase of the step that commands a vehicle again replaces the earlier command (its
+  // owner applies the last one anyway).
   void command(VehicleId id, const ActorControl& c, Step step, PlayOutput& out);
   ActorControl transported(double speed_mps, int lane) const;
   ActorControl releasing() const;
