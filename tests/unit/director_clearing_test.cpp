@@ -102,6 +102,38 @@ TEST(Clearing, AVehicleWaitingToLeaveAZoneIsLetInByTheOneJustBehindItInTheTarget
   EXPECT_EQ(after->lane, 1);
 }
 
+// One that held back and is no longer just behind the waiting one drives on as it likes also when
+// the one that came between may not hold back itself (here, a vehicle still easing back to its own
+// driving after another play): until stop 69 it held back on behind that one for nothing.
+TEST(Clearing, OneThatHeldBackDrivesOnWhenAnotherThatMayNotHoldBackComesBetween) {
+  DirectorCore core(zone_ahead_scenario(), 1);
+  StepInput in;
+  ObservedVehicle waiting = vehicle(8, 2100.0, 25.0, 0);       // in the zone, asked into lane 1
+  const ObservedVehicle behind = vehicle(9, 2092.0, 26.0, 1);  // beside it, a little behind
+  DirectorOutput out;
+  for (Step k = 0; k < 4; ++k) {  // trigger point 1; cast; clearing; the waiting one signals
+    in.step = k;
+    in.ego = testing::ego_at(k, 2000.0 + 2.5 * static_cast<double>(k), 25.0);
+    waiting.indicator = k == 3 ? 1 : 0;
+    in.world_prev = {vehicle(7, 2260.0, 25.0), waiting, behind};
+    out = core.step(in);
+  }
+  const ActorControl* holds = command_for(out, 9);
+  ASSERT_NE(holds, nullptr);
+  EXPECT_NEAR(holds->speed_mps, 25.0 - kLetIn_mps, 1e-9);
+  in.step = 4;
+  in.ego = testing::ego_at(4, 2010.0, 25.0);
+  ObservedVehicle between = vehicle(10, 2097.0, 25.5, 1);
+  between.control = ControlMode::kReleasing;  // no play's to command
+  in.world_prev = {vehicle(7, 2260.0, 25.0), waiting, behind, between};
+  out = core.step(in);
+  EXPECT_EQ(command_for(out, 10), nullptr);
+  const ActorControl* released = command_for(out, 9);
+  ASSERT_NE(released, nullptr);
+  EXPECT_EQ(released->speed_mps, kOwnDesiredSpeed_mps);
+  EXPECT_EQ(released->lane, 1);
+}
+
 // One that holds back behind a faster waiting vehicle is never asked above the top speed of its
 // type's drivers (cut-in, seed 478: a truck holding back for a car that waited at 33 m/s was asked
 // to 31 m/s, where trucks wish 26.4 at most, and drove at 27.6).

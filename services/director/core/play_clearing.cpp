@@ -343,6 +343,13 @@ void PlayRun::let_in_one(const PlayInput& in, const std::vector<Slot>& slots, do
   }
   const auto i = static_cast<std::size_t>(f - in.world.data());
   const bool for_it_already = before != letting_in_.end() && before->second == f->id;
+  // One vehicle holds back for each, the one just behind it: one that did so before and no longer
+  // is (it fell back, or another came between) drives on as it likes, whether or not the new one
+  // may hold back.
+  if (before != letting_in_.end() && !for_it_already) {
+    stop_holding_back(in, before->second, out);
+    letting_in_.erase(before);
+  }
   // An actor in place beside its start that waits to move into v's lane, its start's, lets v into
   // its own first: the two swap lanes (lane_waited_for, clearing.hpp). It holds back in
   // move_actors.
@@ -353,7 +360,6 @@ void PlayRun::let_in_one(const PlayInput& in, const std::vector<Slot>& slots, do
     return;  // it lets in another, or it is an actor or another play's
   }
   if (swapping_actor) {
-    if (before != letting_in_.end() && !for_it_already) stop_holding_back(in, before->second, out);
     letting_in_[id] = f->id;
     return;
   }
@@ -376,9 +382,6 @@ void PlayRun::let_in_one(const PlayInput& in, const std::vector<Slot>& slots, do
   const auto f_asked = lane_requests_.find(f->id);
   const bool swap = f_asked != lane_requests_.end() && f_asked->second.lane == v.lane;
   if (is_cleared(f->id) && holds_lane_request(*f, f->lane, in.ego.time_s) && !swap) return;
-  // One vehicle holds back for each: one that did so before and is no longer just behind it (it
-  // fell back, or another came between) drives on as it likes.
-  if (before != letting_in_.end() && !for_it_already) stop_holding_back(in, before->second, out);
   if (!is_cleared(f->id)) {
     cleared_.push_back(f->id);
     in.available[i] = false;
