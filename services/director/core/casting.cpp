@@ -32,7 +32,7 @@ constexpr double kCastingSlack = 0.5;
 // A vehicle that never overtakes, ahead of the ego on one lane per direction, stays between the ego
 // and any other vehicle or place ahead of it (stuck_between): where it fits the role it is the one
 // actor possible, and is cast up to this many tolerances off (as far as an actor may miss before
-// it gives up, play.cpp, kHopelessMiss). Otherwise the role had no actor at all: a truck of the
+// it gives up, play_transport.cpp, kHopelessMiss). Otherwise the role had no actor at all: a truck of the
 // traffic 685 m ahead of the ego at trigger point 1 missed by 17 m, the next second by more
 // (slow truck, seed 6, stop 43).
 constexpr double kBlockerSlack = 2.0;

@@ -164,6 +164,7 @@ class PlayRun {
   // (blocker_to_take_off), one at a time; returns what it did ("" for nothing).
   std::string make_room(const PlayInput& in, Role& role, const Slot& slot, double length_m,
                         const CastingSituation& at, const WindowBounds& window, PlayOutput& out);
+  // Gives each actor the desired speed and lane that move it to its start (play_transport.cpp).
   void move_actors(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,
                    PlayOutput& out);
   void clear_zones(const PlayInput& in, const std::vector<Slot>& slots, const Aim& aim, double time_to_start_s,

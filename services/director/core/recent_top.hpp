@@ -1,6 +1,6 @@
 #pragma once
 // The highest of a value over a sliding window of time: the ego's usual speed, against which the
-// director tells a driver who has slowed down for a while (play.cpp, an actor judged hopeless).
+// director tells a driver who has slowed down for a while (play_transport.cpp, an actor judged hopeless).
 // A monotonic queue: each sample is added once and dropped once, so a step costs O(1) amortised.
 
 #include <deque>
